@@ -1,0 +1,173 @@
+/**
+ * fosls-contact: frictionless linear elastic contact (Signorini's problem)
+ * in first-order system least-squares form, solved by a monotone multilevel
+ * method.
+ *
+ *   fosls-contact SCENE.prm [--set "Section/Name=value" ...]
+ *
+ * main() only reads the parameters and hands them to FoslsProblem; every
+ * error ends in one line on stderr and exit code 1, before any output file
+ * is written.
+ */
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <fosls_contact/fosls_problem.h>
+#include <fosls_contact/parameters.h>
+
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace
+{
+  /** The one-line text of an exception, without deal.II's stack trace. */
+  std::string
+  one_line(const std::exception &exc)
+  {
+    std::string text;
+    if (const auto *e = dynamic_cast<const dealii::ExceptionBase *>(&exc))
+      {
+        std::ostringstream info;
+        e->print_info(info);
+        text = info.str();
+        if (text.find("Additional information:") != std::string::npos)
+          text = text.substr(text.find("Additional information:") + 23);
+      }
+    else
+      text = exc.what();
+    std::string out;
+    bool        space = false;
+    for (const char c : text)
+      if (std::isspace(static_cast<unsigned char>(c)))
+        space = !out.empty();
+      else
+        {
+          if (space)
+            out += ' ';
+          out += c;
+          space = false;
+        }
+    return out;
+  }
+
+  /** Apply one --set "Section/Subsection/Name=value". */
+  void
+  apply_override(dealii::ParameterHandler &prm, const std::string &assignment)
+  {
+    const auto eq = assignment.find('=');
+    AssertThrow(eq != std::string::npos,
+                dealii::ExcMessage("--set '" + assignment +
+                                   "' is not of the form Section/Name=value"));
+    const auto path =
+      dealii::Utilities::split_string_list(assignment.substr(0, eq), '/');
+    const std::string value = dealii::Utilities::trim(assignment.substr(eq + 1));
+    AssertThrow(path.size() >= 2,
+                dealii::ExcMessage("--set '" + assignment +
+                                   "' needs a section: Section/Name=value"));
+    for (unsigned int i = 0; i + 1 < path.size(); ++i)
+      prm.enter_subsection(path[i]);
+    try
+      {
+        prm.set(path.back(), value);
+      }
+    catch (const dealii::ParameterHandler::ExcEntryUndeclared &)
+      {
+        AssertThrow(false,
+                    dealii::ExcMessage("--set: unknown parameter '" +
+                                       assignment.substr(0, eq) + "'"));
+      }
+    catch (const dealii::ParameterHandler::ExcValueDoesNotMatchPattern &)
+      {
+        AssertThrow(false,
+                    dealii::ExcMessage("--set: invalid value '" + value +
+                                       "' for parameter '" +
+                                       assignment.substr(0, eq) + "'"));
+      }
+    for (unsigned int i = 0; i + 1 < path.size(); ++i)
+      prm.leave_subsection();
+  }
+} // namespace
+
+
+int
+main(int argc, char *argv[])
+{
+  using namespace FoslsContact;
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dealii::deal_II_exceptions::disable_abort_on_exception();
+  dealii::deal_II_exceptions::suppress_stacktrace_in_exceptions();
+
+  std::string where = "command line";
+  try
+    {
+      std::string              file;
+      std::vector<std::string> overrides;
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string arg = argv[i];
+          if (arg == "--set")
+            {
+              AssertThrow(i + 1 < argc,
+                          dealii::ExcMessage("--set needs an argument"));
+              overrides.push_back(argv[++i]);
+            }
+          else if (arg.rfind("--set=", 0) == 0)
+            overrides.push_back(arg.substr(6));
+          else if (arg == "--help" || arg == "-h")
+            {
+              std::cout << "usage: fosls-contact SCENE.prm [--set "
+                           "\"Section/Name=value\" ...]\n";
+              return 0;
+            }
+          else
+            {
+              AssertThrow(file.empty(),
+                          dealii::ExcMessage("more than one parameter file "
+                                             "given ('" + file + "', '" + arg +
+                                             "')"));
+              file = arg;
+            }
+        }
+      AssertThrow(!file.empty(),
+                  dealii::ExcMessage("no parameter file given; usage: "
+                                     "fosls-contact SCENE.prm [--set "
+                                     "\"Section/Name=value\" ...]"));
+      AssertThrow(std::filesystem::is_regular_file(file),
+                  dealii::ExcMessage("parameter file '" + file +
+                                     "' does not exist"));
+
+      dealii::ParameterHandler prm;
+      Parameters::AllParameters::declare_parameters(prm);
+      where = file;
+      prm.parse_input(file);
+      where = file + " (--set)";
+      for (const auto &o : overrides)
+        apply_override(prm, o);
+      where = file;
+      Parameters::AllParameters parameters;
+      parameters.parse_parameters(prm);
+
+      std::ostringstream used;
+      prm.print_parameters(used, dealii::ParameterHandler::PRM);
+
+      if (parameters.geometry.dimension == 2)
+        FoslsProblem<2>(parameters, used.str()).run();
+      else
+        FoslsProblem<3>(parameters, used.str()).run();
+    }
+  catch (const std::exception &exc)
+    {
+      std::cerr << "fosls-contact: error in " << where << ": " << one_line(exc)
+                << std::endl;
+      return 1;
+    }
+  catch (...)
+    {
+      std::cerr << "fosls-contact: unknown error in " << where << std::endl;
+      return 1;
+    }
+  return 0;
+}

@@ -1,0 +1,54 @@
+#ifndef fosls_contact_assembly_fosls_assembler_h
+#define fosls_contact_assembly_fosls_assembler_h
+
+#include <deal.II/base/tensor.h>
+
+#include <fosls_contact/discretization/discretization.h>
+#include <fosls_contact/parameters.h>
+#include <fosls_contact/qp/constrained_qp.h>
+
+namespace FoslsContact
+{
+  /**
+   * Assembles the augmented least-squares functional of paper eqs. (1)-(2),
+   *
+   *   J(u, sigma) = C_eq ||div sigma + f||^2 + C_const ||A sigma - eps(u)||^2
+   *               + C_compl <u.n - g, (sigma n).n>_{Gamma_C},
+   *
+   * on one level, directly in the normal-tangential basis: the local matrix
+   * of a cell that touches a rotated vertex or face is transformed as
+   * R^T K R before it is added, so the global matrix never needs a
+   * triple product.
+   *
+   * Only declared effects are assembled: the body force enters only if the
+   * scene has one, and the face integral over Gamma_C only with contact.
+   */
+  template <int dim>
+  class FoslsAssembler
+  {
+  public:
+    FoslsAssembler(const Discretization<dim> &     discretization,
+                   const Parameters::Material &    material,
+                   const Parameters::Weights &     weights);
+
+    /** Fill @p qp (sized with ConstrainedQP::reinit) on level @p level. */
+    void assemble(const unsigned int level, ConstrainedQP &qp) const;
+
+    /**
+     * The compliance tensor A sigma = (sigma - kappa tr(sigma) I) / (2 mu)
+     * with kappa = lambda / (d lambda + 2 mu), written as
+     * 1 / (d + 2 mu / lambda) so that lambda = inf gives kappa = 1/d exactly
+     * and lambda = 1e8 loses no digits.
+     */
+    static Tensor<2, dim> compliance(const Tensor<2, dim> &sigma,
+                                     const double          mu,
+                                     const double          lambda);
+
+  private:
+    const Discretization<dim> &discretization;
+    const Parameters::Material material;
+    const Parameters::Weights  weights;
+  };
+} // namespace FoslsContact
+
+#endif

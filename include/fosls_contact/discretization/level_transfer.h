@@ -1,0 +1,48 @@
+#ifndef fosls_contact_discretization_level_transfer_h
+#define fosls_contact_discretization_level_transfer_h
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <fosls_contact/discretization/discretization.h>
+
+#include <memory>
+
+namespace FoslsContact
+{
+  /**
+   * The prolongations P_{l-1}^{l} of eqs. (15)-(16) between consecutive
+   * levels, in Cartesian coordinates, as sparse matrices.
+   *
+   * They are assembled exactly as MGTransferPrebuilt::build() does, from
+   * the FESystem's embedding matrices (nodal interpolation for Q1, normal
+   * flux preservation for RT0), entry by entry with `set`. We build them
+   * ourselves because MGTransferPrebuilt keeps its matrices private and the
+   * monotone method needs their entries (truncation, Galerkin products);
+   * tests/unit/level_transfer checks that both prolongate identically.
+   */
+  template <int dim>
+  class LevelTransfer
+  {
+  public:
+    explicit LevelTransfer(const Discretization<dim> &discretization);
+
+    /** Prolongation from level @p to_level - 1 to level @p to_level. */
+    const SparseMatrix<double> &prolongation(const unsigned int to_level) const
+    {
+      return *matrices[to_level];
+    }
+
+    /** dst = P src, Cartesian coordinates. */
+    void prolongate(const unsigned int    to_level,
+                    Vector<double> &      dst,
+                    const Vector<double> &src) const;
+
+  private:
+    std::vector<std::unique_ptr<SparsityPattern>>      sparsities;
+    std::vector<std::unique_ptr<SparseMatrix<double>>> matrices;
+  };
+} // namespace FoslsContact
+
+#endif

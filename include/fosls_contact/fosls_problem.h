@@ -1,0 +1,68 @@
+#ifndef fosls_contact_fosls_problem_h
+#define fosls_contact_fosls_problem_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <fosls_contact/discretization/discretization.h>
+#include <fosls_contact/discretization/level_transfer.h>
+#include <fosls_contact/output/monitor.h>
+#include <fosls_contact/parameters.h>
+#include <fosls_contact/qp/constrained_qp.h>
+#include <fosls_contact/scene/scene.h>
+#include <fosls_contact/solvers/qp_solver.h>
+
+#include <memory>
+
+namespace FoslsContact
+{
+  /**
+   * The program, tutorial style: run() walks the data path
+   *
+   *   scene -> mesh and DoFs -> assembled functional -> constraints in
+   *   normal-tangential coordinates -> solver -> output,
+   *
+   * one member function per box, each in its own TimerOutput section.
+   */
+  template <int dim>
+  class FoslsProblem
+  {
+  public:
+    FoslsProblem(const Parameters::AllParameters &parameters,
+                 const std::string &              used_parameters);
+
+    void run();
+
+  private:
+    void setup();
+    void assemble();
+    void check_definiteness();
+    void make_initial_guess();
+    void solve();
+    void output_results();
+
+    /** A solver for the problem whose finest level is @p level. */
+    std::unique_ptr<QPSolver> make_solver(const unsigned int level) const;
+    /** Solve the problem assembled on level @p level (for initial guesses). */
+    Vector<double> solve_on_level(const unsigned int level,
+                                  const Vector<double> *start) const;
+    /** Interpolate a rotated level-l vector to level l+1 (rotated). */
+    Vector<double> prolongate_rotated(const unsigned int    to_level,
+                                      const Vector<double> &coarse) const;
+
+    const Parameters::AllParameters parameters;
+    const std::string               used_parameters;
+    ConditionalOStream              pcout;
+    TimerOutput                     timer;
+
+    Scene<dim>                           scene;
+    std::unique_ptr<Discretization<dim>> discretization;
+    std::unique_ptr<LevelTransfer<dim>>  transfer;
+    ConstrainedQP                        qp;
+    Vector<double>                       solution;
+    std::unique_ptr<Monitor>             monitor;
+    double                               time_setup = 0, time_solve = 0;
+  };
+} // namespace FoslsContact
+
+#endif

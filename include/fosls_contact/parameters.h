@@ -1,0 +1,190 @@
+#ifndef fosls_contact_parameters_h
+#define fosls_contact_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace FoslsContact
+{
+  using namespace dealii;
+
+  /**
+   * All run-time parameters, one struct per subsection of the input file.
+   *
+   * Every struct has the same two functions: `declare_parameters()` adds its
+   * entries (with a Patterns object, so that ParameterHandler rejects a bad
+   * value with the name of the entry) and `parse_parameters()` reads them back
+   * and performs the checks that a Pattern cannot express (e.g. `lambda =
+   * inf`). Errors are thrown as ExcMessage with a one-line text that names the
+   * parameter; main() adds the file name.
+   */
+  namespace Parameters
+  {
+    /** subsection Geometry: which mesh, how fine, how many levels. */
+    struct Geometry
+    {
+      enum class Shape
+      {
+        box,
+        half_disc,
+      };
+
+      unsigned int        dimension = 2;
+      Shape               shape     = Shape::box;
+      std::vector<double> lower_corner;
+      std::vector<double> upper_corner;
+      std::vector<unsigned int> subdivisions;
+      double              radius       = 0.5;
+      std::vector<double> center;
+      unsigned int        disc_refinements = 2;
+      double              grading          = 1.0;
+      /** Number of multigrid levels J (the coarse mesh is level 1). */
+      unsigned int levels = 5;
+
+      static void declare_parameters(ParameterHandler &prm);
+      void        parse_parameters(ParameterHandler &prm);
+    };
+
+    /** subsection Material: Lame parameters; lambda may be `inf`. */
+    struct Material
+    {
+      double mu     = 1.;
+      double lambda = 1.; ///< +infinity for incompressible material
+
+      static void declare_parameters(ParameterHandler &prm);
+      void        parse_parameters(ParameterHandler &prm);
+    };
+
+    /** subsection Functional weights: C_eq, C_const, C_compl of eq. (1)-(2). */
+    struct Weights
+    {
+      double c_eq    = 1e2;
+      double c_const = 1.;
+      double c_compl = 0.1;
+
+      static void declare_parameters(ParameterHandler &prm);
+      void        parse_parameters(ParameterHandler &prm);
+    };
+
+    /**
+     * subsection Data: the functions of a scene, as FunctionParser
+     * expressions in x, y (, z). Components are separated by `;`. An empty
+     * body force means the scene has none: no term is assembled for it.
+     */
+    struct Data
+    {
+      std::string body_force;
+      std::string dirichlet_values;
+      std::string traction;
+      std::string gap;
+      std::string obstacle_normal;
+      std::string exact_displacement;
+      std::string exact_stress;
+      std::string initial_displacement;
+      std::string constants;
+
+      static void declare_parameters(ParameterHandler &prm);
+      void        parse_parameters(ParameterHandler &prm);
+    };
+
+    /**
+     * subsection Boundary conditions: which boundary ids are Dirichlet,
+     * Neumann and contact boundaries. Every boundary id of the mesh must be
+     * named exactly once. On a Dirichlet id, the components not listed in
+     * `Dirichlet components` get the traction of the Neumann data instead
+     * (a roller), component by component.
+     */
+    struct BoundaryConditions
+    {
+      std::vector<unsigned int> dirichlet_ids;
+      std::vector<bool>         dirichlet_components; ///< size dim, filled later
+      std::string               dirichlet_components_text = "all";
+      std::vector<unsigned int> neumann_ids;
+      std::vector<unsigned int> contact_ids;
+
+      static void declare_parameters(ParameterHandler &prm);
+      void        parse_parameters(ParameterHandler &prm);
+    };
+
+    /** subsection Solver. */
+    struct Solver
+    {
+      enum class Type
+      {
+        monotone_multigrid,
+        active_set,
+        projected_gauss_seidel,
+      };
+      enum class Projection
+      {
+        a,
+        b,
+        c,
+        d,
+      };
+      enum class InitialGuess
+      {
+        zero,
+        coarse_solution,
+        nested_iteration,
+        expression,
+      };
+      enum class Stopping
+      {
+        tolerance,
+        discretization_accuracy,
+      };
+
+      Type         type                = Type::monotone_multigrid;
+      double       tolerance           = 1e-10;
+      unsigned int max_iterations      = 200;
+      Stopping     stopping            = Stopping::tolerance;
+      double       discretization_fraction = 0.1;
+      unsigned int pre_smoothing       = 3;
+      unsigned int post_smoothing      = 3;
+      unsigned int cycle_gamma         = 2; ///< 1 = V-cycle, 2 = W-cycle
+      Projection   projection          = Projection::b;
+      InitialGuess initial_guess       = InitialGuess::coarse_solution;
+      unsigned int definiteness_max_dofs = 20000;
+
+      static void declare_parameters(ParameterHandler &prm);
+      void        parse_parameters(ParameterHandler &prm);
+    };
+
+    /** subsection Output. */
+    struct Output
+    {
+      std::string directory = "output";
+      bool        write_vtu = true;
+      bool        verbose   = true;
+
+      static void declare_parameters(ParameterHandler &prm);
+      void        parse_parameters(ParameterHandler &prm);
+    };
+
+    /** All subsections together. */
+    struct AllParameters
+    {
+      Geometry           geometry;
+      Material           material;
+      Weights            weights;
+      Data               data;
+      BoundaryConditions boundary_conditions;
+      Solver             solver;
+      Output             output;
+
+      static void declare_parameters(ParameterHandler &prm);
+      void        parse_parameters(ParameterHandler &prm);
+    };
+
+    /** Parse a double that may be written `inf`. */
+    double parse_extended_double(const std::string &text, const std::string &name);
+    /** Parse a comma separated list of doubles. */
+    std::vector<double> parse_double_list(const std::string &text);
+  } // namespace Parameters
+} // namespace FoslsContact
+
+#endif

@@ -1,0 +1,89 @@
+#ifndef fosls_contact_qp_constrained_qp_h
+#define fosls_contact_qp_constrained_qp_h
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <fosls_contact/discretization/discretization.h>
+
+namespace FoslsContact
+{
+  /** Residuals of the KKT conditions of a ConstrainedQP, relative to |b|. */
+  struct KKTResidual
+  {
+    double stationarity    = 0; ///< max |(A x - b)_i + mu_i| over non-fixed i
+    double feasibility     = 0; ///< max (x_i - ub_i)_+ and |x_i - fixed_i|
+    double complementarity = 0; ///< max |mu_i (ub_i - x_i)|
+    double max() const
+    {
+      return std::max(stationarity, std::max(feasibility, complementarity));
+    }
+  };
+
+  /** The three parts of the functional J of eqs. (1)-(2). */
+  struct FunctionalValue
+  {
+    double total = 0, eq = 0, constitutive = 0, complementarity = 0;
+  };
+
+  /**
+   * The seam of the program: a box-constrained quadratic problem
+   *
+   *   minimize J(x) = 1/2 x^T A x - b^T x + c
+   *   subject to x_i = fixed_i (role fixed), x_i <= ub_i (role bounded),
+   *
+   * in the normal-tangential basis (paper section 4.3), so that every
+   * contact constraint bounds one DoF. J is the least-squares functional
+   * itself (A is twice the Gram matrix), so J(x) is the a posteriori error
+   * estimate of the paper. The solvers see only this object.
+   *
+   * The matrices of the equilibrium and complementarity parts are kept as
+   * well, only to report J's parts; the constitutive part is the rest.
+   */
+  struct ConstrainedQP
+  {
+    SparseMatrix<double> matrix;
+    Vector<double>       rhs;
+    double               constant = 0;
+
+    SparseMatrix<double> matrix_eq, matrix_compl;
+    Vector<double>       rhs_eq, rhs_compl;
+    double               constant_eq = 0;
+
+    std::vector<DoFRole> role;
+    Vector<double>       fixed_values;
+    Vector<double>       upper_bounds;
+
+    /** Size the matrices on @p sparsity and copy roles and bounds. */
+    template <int dim>
+    void reinit(const LevelData<dim> &level);
+
+    types::global_dof_index size() const { return rhs.size(); }
+
+    /** J(x). */
+    double value(const Vector<double> &x) const;
+    /** J(x) and its parts. */
+    FunctionalValue parts(const Vector<double> &x) const;
+    /** Set fixed DoFs to their values and cut bounded DoFs at their bound. */
+    void project_to_feasible(Vector<double> &x) const;
+    /** Largest violation of a bound or of a fixed value. */
+    double max_violation(const Vector<double> &x) const;
+    /** Number of bounded DoFs at their bound. */
+    unsigned int n_active(const Vector<double> &x) const;
+    /** KKT residuals at x. */
+    KKTResidual kkt_residual(const Vector<double> &x) const;
+    /**
+     * The energy norm sqrt(d^T A d) of a correction d (zero on fixed DoFs,
+     * where A is positive definite).
+     */
+    double energy_norm(const Vector<double> &d) const;
+    /**
+     * A norm of a whole iterate, to make corrections relative: the
+     * least-squares part sqrt(x^T (A - A_compl) x), which is a sum of
+     * squares (A itself need not be definite on fixed DoFs).
+     */
+    double reference_norm(const Vector<double> &x) const;
+  };
+} // namespace FoslsContact
+
+#endif

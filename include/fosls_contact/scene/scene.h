@@ -1,0 +1,91 @@
+#ifndef fosls_contact_scene_scene_h
+#define fosls_contact_scene_scene_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/grid/tria.h>
+
+#include <fosls_contact/parameters.h>
+
+#include <memory>
+#include <set>
+
+namespace FoslsContact
+{
+  /**
+   * A scene: the geometry (coarse mesh with boundary ids) and the data
+   * functions of one problem, read from the parameter file.
+   *
+   * The scene also decides which effects exist. A body force is simulated
+   * only when the file gives one, and contact only when it names contact
+   * boundary ids; everything downstream asks has_body_force() and
+   * has_contact() instead of assembling zero terms, so an undeclared effect
+   * costs nothing.
+   */
+  template <int dim>
+  class Scene
+  {
+  public:
+    explicit Scene(const Parameters::AllParameters &parameters);
+
+    /**
+     * Fill @p triangulation with the coarse mesh (level 1 of the paper,
+     * level 0 in deal.II) and check that its boundary ids are exactly the
+     * ones named in the parameter file.
+     */
+    void make_coarse_mesh(Triangulation<dim> &triangulation) const;
+
+    bool has_contact() const { return !contact_ids.empty(); }
+    bool has_body_force() const { return body_force_function != nullptr; }
+    bool has_exact_solution() const { return exact_u_function != nullptr; }
+
+    bool is_dirichlet(const types::boundary_id id) const;
+    bool is_neumann(const types::boundary_id id) const;
+    bool is_contact(const types::boundary_id id) const;
+    /** Components of u prescribed on Dirichlet ids. */
+    const std::vector<bool> &dirichlet_components() const
+    {
+      return dirichlet_mask;
+    }
+
+    const Function<dim> &body_force() const { return *body_force_function; }
+    const Function<dim> &dirichlet_values() const { return *dirichlet_function; }
+    const Function<dim> &traction() const { return *traction_function; }
+    const Function<dim> &gap() const { return *gap_function; }
+    /** The unit obstacle normal at @p p (the expression, normalized). */
+    Tensor<1, dim> obstacle_normal(const Point<dim> &p) const;
+    const Function<dim> &exact_displacement() const { return *exact_u_function; }
+    /** Exact stress, dim*dim components, row by row; may be null. */
+    const Function<dim> *exact_stress() const { return exact_sigma_function.get(); }
+    /** Initial displacement expression, or null. */
+    const Function<dim> *initial_displacement() const
+    {
+      return initial_u_function.get();
+    }
+
+    /** h_max / h_min of the coarse mesh, printed for graded meshes. */
+    static double mesh_size_ratio(const Triangulation<dim> &triangulation);
+
+  private:
+    std::unique_ptr<FunctionParser<dim>>
+    make_function(const std::string &expression,
+                  const unsigned int n_components,
+                  const std::string &name) const;
+
+    const Parameters::Geometry geometry;
+    std::map<std::string, double> constants;
+    std::set<types::boundary_id> dirichlet_ids, neumann_ids, contact_ids;
+    std::vector<bool> dirichlet_mask;
+
+    std::unique_ptr<FunctionParser<dim>> body_force_function;
+    std::unique_ptr<FunctionParser<dim>> dirichlet_function;
+    std::unique_ptr<FunctionParser<dim>> traction_function;
+    std::unique_ptr<FunctionParser<dim>> gap_function;
+    std::unique_ptr<FunctionParser<dim>> normal_function;
+    std::unique_ptr<FunctionParser<dim>> exact_u_function;
+    std::unique_ptr<FunctionParser<dim>> exact_sigma_function;
+    std::unique_ptr<FunctionParser<dim>> initial_u_function;
+  };
+} // namespace FoslsContact
+
+#endif

@@ -1,0 +1,37 @@
+#ifndef fosls_contact_solvers_active_set_direct_h
+#define fosls_contact_solvers_active_set_direct_h
+
+#include <fosls_contact/solvers/qp_solver.h>
+
+namespace FoslsContact
+{
+  /**
+   * The reference solver: a primal-dual active set method (Hintermueller,
+   * Ito, Kunisch) with a sparse direct solve (UMFPACK) of the reduced
+   * system in every step. It stops when the active set repeats, i.e. at the
+   * exact discrete KKT point. The test for the active set,
+   * mu_i + c_i (x_i - ub_i) > 0, uses c_i = A_ii so that it is invariant to
+   * the scaling of the DoFs.
+   */
+  class ActiveSetDirect : public QPSolver
+  {
+  public:
+    void solve(const ConstrainedQP &qp,
+               Vector<double> &     x,
+               Monitor &            monitor) override;
+
+    /**
+     * The same method without a monitor, for small problems (the coarsest
+     * level of the multigrid method). DoFs with a zero diagonal are treated
+     * as fixed at their value in @p x. Returns the number of steps.
+     */
+    static unsigned int solve_quietly(const SparseMatrix<double> &matrix,
+                                      const Vector<double> &      rhs,
+                                      const std::vector<DoFRole> &role,
+                                      const Vector<double> &      upper_bounds,
+                                      Vector<double> &            x,
+                                      const unsigned int          max_steps);
+  };
+} // namespace FoslsContact
+
+#endif

@@ -1,0 +1,24 @@
+#ifndef fosls_contact_solvers_qp_solver_h
+#define fosls_contact_solvers_qp_solver_h
+
+#include <fosls_contact/output/monitor.h>
+#include <fosls_contact/qp/constrained_qp.h>
+
+namespace FoslsContact
+{
+  /**
+   * Interface of the solvers for a ConstrainedQP. @p x enters as the
+   * starting guess (it is projected to the feasible set first) and leaves
+   * as the solution; every iteration is reported to @p monitor.
+   */
+  class QPSolver
+  {
+  public:
+    virtual ~QPSolver() = default;
+    virtual void solve(const ConstrainedQP &qp,
+                       Vector<double> &     x,
+                       Monitor &            monitor) = 0;
+  };
+} // namespace FoslsContact
+
+#endif

@@ -1,0 +1,371 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <fosls_contact/assembly/fosls_assembler.h>
+#include <fosls_contact/fosls_problem.h>
+#include <fosls_contact/output/postprocessor.h>
+#include <fosls_contact/qp/definiteness_check.h>
+#include <fosls_contact/solvers/active_set_direct.h>
+#include <fosls_contact/solvers/monotone_multigrid.h>
+#include <fosls_contact/solvers/projected_gauss_seidel.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace FoslsContact
+{
+  namespace
+  {
+    std::string
+    number(const double value)
+    {
+      if (!std::isfinite(value))
+        return "null";
+      std::ostringstream s;
+      s << std::setprecision(12) << value;
+      return s.str();
+    }
+
+    const char *
+    solver_name(const Parameters::Solver::Type type)
+    {
+      switch (type)
+        {
+          case Parameters::Solver::Type::monotone_multigrid:
+            return "monotone multigrid";
+          case Parameters::Solver::Type::active_set:
+            return "active set";
+          default:
+            return "projected gauss seidel";
+        }
+    }
+  } // namespace
+
+
+  template <int dim>
+  FoslsProblem<dim>::FoslsProblem(const Parameters::AllParameters &parameters,
+                                  const std::string &used_parameters)
+    : parameters(parameters)
+    , used_parameters(used_parameters)
+    , pcout(std::cout,
+            parameters.output.verbose &&
+              Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
+    , scene(parameters)
+  {}
+
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::setup()
+  {
+    TimerOutput::Scope t(timer, "Setup: mesh, DoFs, levels");
+    Timer              wall;
+    discretization =
+      std::make_unique<Discretization<dim>>(scene, parameters.geometry.levels);
+    transfer = std::make_unique<LevelTransfer<dim>>(*discretization);
+    time_setup += wall.wall_time();
+
+    const auto &fine = discretization->level(discretization->finest_level());
+    pcout << "Scene: " << dim << "D, " << discretization->n_levels()
+          << " levels, " << discretization->get_triangulation().n_active_cells()
+          << " cells, " << fine.n_dofs << " DoFs on the finest level"
+          << std::endl
+          << "       coarse mesh h_max/h_min = " << std::fixed
+          << std::setprecision(4) << discretization->coarse_mesh_ratio()
+          << std::defaultfloat << std::endl;
+    if (scene.has_contact())
+      pcout << "       contact: " << fine.contact_vertices.size()
+            << " vertices, " << fine.contact_faces.size() << " faces"
+            << std::endl;
+    else
+      pcout << "       no contact boundary: linear FOSLS problem" << std::endl;
+  }
+
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::assemble()
+  {
+    TimerOutput::Scope t(timer, "Assembly");
+    Timer              wall;
+    const unsigned int L = discretization->finest_level();
+    qp.reinit(discretization->level(L));
+    FoslsAssembler<dim>(*discretization, parameters.material, parameters.weights)
+      .assemble(L, qp);
+    time_setup += wall.wall_time();
+  }
+
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::check_definiteness()
+  {
+    const auto &w = parameters.weights;
+    if (!scene.has_contact() || w.c_compl == 0 ||
+        parameters.solver.definiteness_max_dofs == 0)
+      return;
+    TimerOutput::Scope t(timer, "Definiteness check");
+    Timer              wall;
+    // The finest level small enough; indefinite there means indefinite on
+    // all finer levels, as the spaces are nested.
+    int level = discretization->finest_level();
+    while (level >= 0 &&
+           discretization->level(level).n_dofs > parameters.solver.definiteness_max_dofs)
+      --level;
+    if (level < 0)
+      {
+        pcout << "Definiteness check skipped: even level 1 has more than "
+              << parameters.solver.definiteness_max_dofs << " DoFs" << std::endl;
+        return;
+      }
+    DefinitenessCheck result;
+    if (static_cast<unsigned int>(level) == discretization->finest_level())
+      result = DefinitenessCheck::run(qp);
+    else
+      {
+        ConstrainedQP coarse;
+        coarse.reinit(discretization->level(level));
+        FoslsAssembler<dim>(*discretization, parameters.material, w)
+          .assemble(level, coarse);
+        result = DefinitenessCheck::run(coarse);
+      }
+    time_setup += wall.wall_time();
+    pcout << "Definiteness check on level " << level + 1
+          << ": smallest relative eigenvalue of the contact Schur complement = "
+          << std::setprecision(4) << result.min_relative_eigenvalue << std::endl;
+    std::ostringstream weights;
+    weights << "C_eq = " << w.c_eq << ", C_const = " << w.c_const
+            << ", C_compl = " << w.c_compl;
+    AssertThrow(result.definite(),
+                ExcMessage("the functional is indefinite for " + weights.str() +
+                           " (smallest relative eigenvalue of the contact "
+                           "Schur complement " +
+                           number(result.min_relative_eigenvalue) +
+                           " on level " + std::to_string(level + 1) +
+                           "): decrease 'Functional weights/C_compl' or "
+                           "increase C_eq/C_const (paper eq. 10)"));
+  }
+
+
+  template <int dim>
+  std::unique_ptr<QPSolver>
+  FoslsProblem<dim>::make_solver(const unsigned int level) const
+  {
+    switch (parameters.solver.type)
+      {
+        case Parameters::Solver::Type::active_set:
+          return std::make_unique<ActiveSetDirect>();
+        case Parameters::Solver::Type::projected_gauss_seidel:
+          return std::make_unique<ProjectedGaussSeidel>();
+        default:
+          return std::make_unique<MonotoneMultigrid<dim>>(*discretization,
+                                                          *transfer,
+                                                          level,
+                                                          parameters.solver);
+      }
+  }
+
+
+  template <int dim>
+  Vector<double>
+  FoslsProblem<dim>::prolongate_rotated(const unsigned int    to_level,
+                                        const Vector<double> &coarse) const
+  {
+    Vector<double> cartesian(coarse), fine(discretization->level(to_level).n_dofs);
+    discretization->rotate_to_cartesian(to_level - 1, cartesian);
+    transfer->prolongate(to_level, fine, cartesian);
+    discretization->rotate_to_normal_tangential(to_level, fine);
+    return fine;
+  }
+
+
+  template <int dim>
+  Vector<double>
+  FoslsProblem<dim>::solve_on_level(const unsigned int    level,
+                                    const Vector<double> *start) const
+  {
+    ConstrainedQP level_qp;
+    level_qp.reinit(discretization->level(level));
+    FoslsAssembler<dim>(*discretization, parameters.material, parameters.weights)
+      .assemble(level, level_qp);
+    Vector<double> x(level_qp.size());
+    if (start)
+      x = *start;
+    ConditionalOStream quiet(std::cout, false);
+    Monitor            level_monitor(level_qp, parameters.solver, quiet, "level");
+    if (level == 0)
+      ActiveSetDirect().solve(level_qp, x, level_monitor);
+    else
+      make_solver(level)->solve(level_qp, x, level_monitor);
+    return x;
+  }
+
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::make_initial_guess()
+  {
+    TimerOutput::Scope t(timer, "Initial guess");
+    const unsigned int L = discretization->finest_level();
+    solution.reinit(qp.size());
+    using IG = Parameters::Solver::InitialGuess;
+    switch (parameters.solver.initial_guess)
+      {
+        case IG::zero:
+          break;
+        case IG::coarse_solution:
+          {
+            // paper section 7: the exact level-1 solution, interpolated
+            Vector<double> x = solve_on_level(0, nullptr);
+            for (unsigned int l = 1; l <= L; ++l)
+              x = prolongate_rotated(l, x);
+            solution = x;
+            break;
+          }
+        case IG::nested_iteration:
+          {
+            Vector<double> x = solve_on_level(0, nullptr);
+            for (unsigned int l = 1; l < L; ++l)
+              {
+                x = prolongate_rotated(l, x);
+                x = solve_on_level(l, &x);
+              }
+            if (L > 0)
+              solution = prolongate_rotated(L, x);
+            else
+              solution = x;
+            break;
+          }
+        case IG::expression:
+          {
+            const auto &fine = discretization->level(L);
+            Vector<double> values(dim);
+            for (const auto &cell : discretization->get_dof_handler()
+                                      .mg_cell_iterators_on_level(L))
+              for (const unsigned int v : cell->vertex_indices())
+                {
+                  scene.initial_displacement()->vector_value(cell->vertex(v), values);
+                  const auto &dofs = fine.vertex_dofs.at(cell->vertex_index(v));
+                  for (unsigned int k = 0; k < dim; ++k)
+                    solution[dofs[k]] = values[k];
+                }
+            discretization->rotate_to_normal_tangential(L, solution);
+            break;
+          }
+      }
+    const double violation = qp.max_violation(solution);
+    if (violation > 1e-12 * std::max(1e-300, qp.fixed_values.linfty_norm()))
+      pcout << "Initial guess violates the constraints by " << std::scientific
+            << std::setprecision(3) << violation << std::defaultfloat
+            << ": projected onto the feasible set" << std::endl;
+  }
+
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::solve()
+  {
+    TimerOutput::Scope t(timer, "Solve");
+    Timer              wall;
+    monitor = std::make_unique<Monitor>(qp,
+                                        parameters.solver,
+                                        pcout,
+                                        solver_name(parameters.solver.type));
+    make_solver(discretization->finest_level())->solve(qp, solution, *monitor);
+    time_solve = wall.wall_time();
+
+    const KKTResidual kkt = qp.kkt_residual(solution);
+    pcout << "KKT residuals: stationarity " << std::scientific
+          << std::setprecision(3) << kkt.stationarity << ", feasibility "
+          << kkt.feasibility << ", complementarity " << kkt.complementarity
+          << std::defaultfloat << std::endl;
+    pcout << (monitor->converged() ? "Converged" : "NOT converged") << " after "
+          << monitor->iterations() << " iterations" << std::endl;
+  }
+
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::output_results()
+  {
+    TimerOutput::Scope      t(timer, "Output");
+    Postprocessor<dim>      post(*discretization, parameters);
+    const Vector<double>    cartesian = post.cartesian_active(solution);
+    const Tensor<1, dim>    force     = post.contact_force(cartesian);
+    const FunctionalValue   J         = qp.parts(solution);
+    const KKTResidual       kkt       = qp.kkt_residual(solution);
+
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+
+    std::map<std::string, std::string> summary;
+    summary["dimension"]        = std::to_string(dim);
+    summary["dofs"]             = std::to_string(qp.size());
+    summary["levels"]           = std::to_string(discretization->n_levels());
+    summary["solver"]           = std::string("\"") + solver_name(parameters.solver.type) + "\"";
+    summary["iterations"]       = std::to_string(monitor->iterations());
+    summary["converged"]        = monitor->converged() ? "true" : "false";
+    summary["rate_asymptotic"]  = number(monitor->asymptotic_rate());
+    summary["functional"]       = number(J.total);
+    summary["functional_eq"]    = number(J.eq);
+    summary["functional_const"] = number(J.constitutive);
+    summary["functional_compl"] = number(J.complementarity);
+    std::string f = "[";
+    for (unsigned int d = 0; d < dim; ++d)
+      f += (d ? ", " : "") + number(force[d]);
+    summary["contact_force"]         = f + "]";
+    summary["kkt_residual"]          = number(kkt.max());
+    summary["max_violation"]         = number(qp.max_violation(solution));
+    summary["active"]                = std::to_string(qp.n_active(solution));
+    summary["energy_increases"]      = std::to_string(monitor->energy_increases());
+    summary["feasibility_dampings"]  = std::to_string(monitor->feasibility_dampings());
+    summary["h_ratio_coarse"]        = number(discretization->coarse_mesh_ratio());
+    summary["time_setup_s"]          = number(time_setup);
+    summary["time_solve_s"]          = number(time_solve);
+    summary["peak_rss_mb"]           = number(memory.VmHWM / 1024.);
+    if (scene.has_exact_solution())
+      {
+        const ErrorNorms e = post.errors(cartesian);
+        summary["error_u_l2"]       = number(e.u_l2);
+        summary["error_u_h1"]       = number(e.u_h1());
+        summary["error_sigma_l2"]   = number(e.sigma_l2);
+        summary["error_sigma_hdiv"] = number(e.sigma_hdiv());
+        pcout << "Errors: |u - u_h|_H1 = " << std::scientific
+              << std::setprecision(4) << e.u_h1()
+              << ", |sigma - sigma_h|_Hdiv = " << e.sigma_hdiv()
+              << std::defaultfloat << std::endl;
+      }
+    pcout << "Functional J = " << std::scientific << std::setprecision(6)
+          << J.total << " (eq " << J.eq << ", const " << J.constitutive
+          << ", compl " << J.complementarity << ")" << std::endl;
+    if (scene.has_contact())
+      {
+        pcout << "Contact force =";
+        for (unsigned int d = 0; d < dim; ++d)
+          pcout << ' ' << std::setprecision(8) << force[d];
+        pcout << std::defaultfloat << std::endl;
+      }
+    post.write(solution, *monitor, summary, used_parameters);
+    pcout << "Output written to " << parameters.output.directory << "/"
+          << std::endl;
+  }
+
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::run()
+  {
+    setup();
+    assemble();
+    check_definiteness();
+    make_initial_guess();
+    solve();
+    output_results();
+    if (parameters.output.verbose)
+      timer.print_summary();
+  }
+
+  template class FoslsProblem<2>;
+  template class FoslsProblem<3>;
+} // namespace FoslsContact

@@ -1,0 +1,510 @@
+#include <deal.II/base/utilities.h>
+
+#include <fosls_contact/parameters.h>
+
+#include <cmath>
+
+namespace FoslsContact
+{
+  namespace Parameters
+  {
+    namespace
+    {
+      std::vector<unsigned int>
+      parse_id_list(const std::string &text)
+      {
+        std::vector<unsigned int> ids;
+        for (const auto &entry :
+             Utilities::split_string_list(text, ','))
+          ids.push_back(Utilities::string_to_int(entry));
+        return ids;
+      }
+    } // namespace
+
+    double
+    parse_extended_double(const std::string &text, const std::string &name)
+    {
+      const std::string t = Utilities::trim(text);
+      if (t == "inf" || t == "infinity" || t == "+inf")
+        return std::numeric_limits<double>::infinity();
+      try
+        {
+          std::size_t  pos   = 0;
+          const double value = std::stod(t, &pos);
+          if (pos == t.size() && std::isfinite(value))
+            return value;
+        }
+      catch (...)
+        {}
+      AssertThrow(false,
+                  ExcMessage("parameter '" + name + "' has value '" + t +
+                             "', which is neither a number nor 'inf'"));
+      return 0;
+    }
+
+    std::vector<double>
+    parse_double_list(const std::string &text)
+    {
+      std::vector<double> values;
+      for (const auto &entry : Utilities::split_string_list(text, ','))
+        values.push_back(Utilities::string_to_double(entry));
+      return values;
+    }
+
+
+    void
+    Geometry::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      prm.declare_entry("Dimension",
+                        "2",
+                        Patterns::Integer(2, 3),
+                        "Space dimension, 2 or 3.");
+      prm.declare_entry("Shape",
+                        "box",
+                        Patterns::Selection("box|half disc"),
+                        "box: an axis-parallel box (boundary ids 0/1 = x min/max, "
+                        "2/3 = y min/max, 4/5 = z min/max). half disc: the lower "
+                        "half of a disc (2D only) with its flat side on top "
+                        "(boundary id 0 = curved side, 1 = flat top).");
+      prm.declare_entry("Box lower corner",
+                        "0, 0",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Lower corner of the box.");
+      prm.declare_entry("Box upper corner",
+                        "1, 1",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Upper corner of the box.");
+      prm.declare_entry("Box subdivisions",
+                        "1, 1",
+                        Patterns::List(Patterns::Integer(1, 1000), 2, 3),
+                        "Cells per direction of the coarse mesh (level 1). "
+                        "Unequal cell sizes give anisotropic cells.");
+      prm.declare_entry("Radius",
+                        "0.5",
+                        Patterns::Double(0),
+                        "Radius of the half disc.");
+      prm.declare_entry("Center",
+                        "0, 1",
+                        Patterns::List(Patterns::Double(), 2, 2),
+                        "Center of the half disc (middle of its flat top).");
+      prm.declare_entry("Half disc coarse refinements",
+                        "2",
+                        Patterns::Integer(0, 6),
+                        "Refinements of the 4-cell half disc that make the "
+                        "coarse mesh (level 1) before grading.");
+      prm.declare_entry("Grading",
+                        "1",
+                        Patterns::Double(1, 10),
+                        "Half disc: exponent of the grading toward the lowest "
+                        "point (1 = no grading). The run prints h_max/h_min "
+                        "of the coarse mesh.");
+      prm.declare_entry("Levels",
+                        "5",
+                        Patterns::Integer(1, 14),
+                        "Number of levels J: the coarse mesh is level 1 and "
+                        "level J is the coarse mesh refined J-1 times.");
+      prm.leave_subsection();
+    }
+
+    void
+    Geometry::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      dimension = prm.get_integer("Dimension");
+      shape     = prm.get("Shape") == "box" ? Shape::box : Shape::half_disc;
+      lower_corner = parse_double_list(prm.get("Box lower corner"));
+      upper_corner = parse_double_list(prm.get("Box upper corner"));
+      subdivisions.clear();
+      for (const auto &s :
+           Utilities::split_string_list(prm.get("Box subdivisions"), ','))
+        subdivisions.push_back(Utilities::string_to_int(s));
+      radius           = prm.get_double("Radius");
+      center           = parse_double_list(prm.get("Center"));
+      disc_refinements = prm.get_integer("Half disc coarse refinements");
+      grading          = prm.get_double("Grading");
+      levels           = prm.get_integer("Levels");
+      prm.leave_subsection();
+
+      if (shape == Shape::box)
+        {
+          AssertThrow(lower_corner.size() == dimension &&
+                        upper_corner.size() == dimension &&
+                        subdivisions.size() == dimension,
+                      ExcMessage("Geometry/Box lower corner, Box upper corner "
+                                 "and Box subdivisions need " +
+                                 std::to_string(dimension) + " entries each"));
+          for (unsigned int d = 0; d < dimension; ++d)
+            AssertThrow(lower_corner[d] < upper_corner[d],
+                        ExcMessage("Geometry/Box lower corner must be below "
+                                   "Box upper corner in every coordinate"));
+        }
+      else
+        AssertThrow(dimension == 2,
+                    ExcMessage("Geometry/Shape = half disc needs Dimension = 2"));
+    }
+
+
+    void
+    Material::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      prm.declare_entry("mu", "1", Patterns::Double(0), "Shear modulus mu > 0.");
+      prm.declare_entry("lambda",
+                        "1",
+                        Patterns::Anything(),
+                        "Lame parameter lambda >= 0, or 'inf' for an "
+                        "incompressible material (exact, no penalty).");
+      prm.leave_subsection();
+    }
+
+    void
+    Material::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      mu     = prm.get_double("mu");
+      lambda = parse_extended_double(prm.get("lambda"), "Material/lambda");
+      prm.leave_subsection();
+      AssertThrow(mu > 0, ExcMessage("parameter 'Material/mu' must be > 0"));
+      AssertThrow(lambda >= 0,
+                  ExcMessage("parameter 'Material/lambda' must be >= 0 or inf"));
+    }
+
+
+    void
+    Weights::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Functional weights");
+      prm.declare_entry("C_eq",
+                        "1e2",
+                        Patterns::Double(0),
+                        "Weight of ||div sigma + f||^2 (paper eq. 1).");
+      prm.declare_entry("C_const",
+                        "1",
+                        Patterns::Double(0),
+                        "Weight of ||A sigma - eps(u)||^2 (paper eq. 1).");
+      prm.declare_entry("C_compl",
+                        "0.1",
+                        Patterns::Double(0),
+                        "Weight of the complementarity term <u.n - g, (sigma n).n> "
+                        "(paper eq. 2). Too large a value makes the problem "
+                        "indefinite; the program checks and refuses. The "
+                        "paper's 1e1 is indefinite for mu = 1, C_const = 1 "
+                        "(see doc/method.md), hence the default 0.1.");
+      prm.leave_subsection();
+    }
+
+    void
+    Weights::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Functional weights");
+      c_eq    = prm.get_double("C_eq");
+      c_const = prm.get_double("C_const");
+      c_compl = prm.get_double("C_compl");
+      prm.leave_subsection();
+      AssertThrow(c_eq > 0 && c_const > 0,
+                  ExcMessage("parameters 'Functional weights/C_eq' and "
+                             "'C_const' must be > 0"));
+    }
+
+
+    void
+    Data::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Data");
+      prm.declare_entry("Constants",
+                        "",
+                        Patterns::Anything(),
+                        "Named constants for all expressions, e.g. "
+                        "'push=0.01, R=0.5' (pi is always defined).");
+      prm.declare_entry("Body force",
+                        "",
+                        Patterns::Anything(),
+                        "Body force f, components separated by ';'. Empty: the "
+                        "scene has no body force and no term is assembled.");
+      prm.declare_entry("Dirichlet values",
+                        "0; 0",
+                        Patterns::Anything(),
+                        "Displacement u^D on the Dirichlet boundary.");
+      prm.declare_entry("Traction",
+                        "0; 0",
+                        Patterns::Anything(),
+                        "Traction t^N = sigma n on the Neumann boundary.");
+      prm.declare_entry("Gap",
+                        "0",
+                        Patterns::Anything(),
+                        "Gap g: the contact constraint is u.n <= g.");
+      prm.declare_entry("Obstacle normal",
+                        "0; -1",
+                        Patterns::Anything(),
+                        "Direction n of the contact constraints u.n <= g and "
+                        "(sigma n_body).n <= 0: it points from the body into "
+                        "the obstacle and is normalized by the program.");
+      prm.declare_entry("Exact displacement",
+                        "",
+                        Patterns::Anything(),
+                        "Optional exact u, for error norms.");
+      prm.declare_entry("Exact stress",
+                        "",
+                        Patterns::Anything(),
+                        "Optional exact sigma, row by row (dim*dim entries).");
+      prm.declare_entry("Initial displacement",
+                        "",
+                        Patterns::Anything(),
+                        "Used with Solver/Initial guess = expression: the "
+                        "starting displacement, projected onto the feasible set.");
+      prm.leave_subsection();
+    }
+
+    void
+    Data::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Data");
+      constants            = prm.get("Constants");
+      body_force           = prm.get("Body force");
+      dirichlet_values     = prm.get("Dirichlet values");
+      traction             = prm.get("Traction");
+      gap                  = prm.get("Gap");
+      obstacle_normal      = prm.get("Obstacle normal");
+      exact_displacement   = prm.get("Exact displacement");
+      exact_stress         = prm.get("Exact stress");
+      initial_displacement = prm.get("Initial displacement");
+      prm.leave_subsection();
+    }
+
+
+    void
+    BoundaryConditions::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      prm.declare_entry("Dirichlet boundary ids",
+                        "",
+                        Patterns::List(Patterns::Integer(0, 255)),
+                        "Boundary ids with prescribed displacement.");
+      prm.declare_entry("Dirichlet components",
+                        "all",
+                        Patterns::Anything(),
+                        "'all' or a list of components (0 = x, 1 = y, 2 = z) "
+                        "prescribed on the Dirichlet ids; the other components "
+                        "get the traction of Data/Traction.");
+      prm.declare_entry("Neumann boundary ids",
+                        "",
+                        Patterns::List(Patterns::Integer(0, 255)),
+                        "Boundary ids with prescribed traction.");
+      prm.declare_entry("Contact boundary ids",
+                        "",
+                        Patterns::List(Patterns::Integer(0, 255)),
+                        "Boundary ids of the contact boundary Gamma_C. Empty: "
+                        "the scene has no contact and no contact machinery is "
+                        "set up.");
+      prm.leave_subsection();
+    }
+
+    void
+    BoundaryConditions::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      dirichlet_ids             = parse_id_list(prm.get("Dirichlet boundary ids"));
+      dirichlet_components_text = Utilities::trim(prm.get("Dirichlet components"));
+      neumann_ids               = parse_id_list(prm.get("Neumann boundary ids"));
+      contact_ids               = parse_id_list(prm.get("Contact boundary ids"));
+      prm.leave_subsection();
+
+      AssertThrow(!dirichlet_ids.empty(),
+                  ExcMessage("parameter 'Boundary conditions/Dirichlet boundary "
+                             "ids' is empty: the problem needs a Dirichlet part "
+                             "(Gamma_D nonempty, paper section 2)"));
+      std::vector<unsigned int> all = dirichlet_ids;
+      all.insert(all.end(), neumann_ids.begin(), neumann_ids.end());
+      all.insert(all.end(), contact_ids.begin(), contact_ids.end());
+      std::sort(all.begin(), all.end());
+      const auto dup = std::adjacent_find(all.begin(), all.end());
+      AssertThrow(dup == all.end(),
+                  ExcMessage("boundary id " + std::to_string(*dup) +
+                             " is named twice in 'Boundary conditions'"));
+    }
+
+
+    void
+    Solver::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Solver");
+      prm.declare_entry("Type",
+                        "monotone multigrid",
+                        Patterns::Selection(
+                          "monotone multigrid|active set|projected gauss seidel"),
+                        "monotone multigrid: the paper's method (default). "
+                        "active set: primal-dual active set with a sparse direct "
+                        "solve (the reference). projected gauss seidel: the "
+                        "classic baseline.");
+      prm.declare_entry("Tolerance",
+                        "1e-10",
+                        Patterns::Double(0),
+                        "Stop when the energy norm of the last correction is "
+                        "below Tolerance times that of the first correction "
+                        "(an error reduction factor).");
+      prm.declare_entry("Max iterations",
+                        "200",
+                        Patterns::Integer(1),
+                        "Maximal number of iterations (cycles, sweeps or "
+                        "active-set steps).");
+      prm.declare_entry("Stopping criterion",
+                        "tolerance",
+                        Patterns::Selection("tolerance|discretization accuracy"),
+                        "tolerance: as above. discretization accuracy: stop when "
+                        "the estimated algebraic error is below Discretization "
+                        "fraction times the least-squares functional's "
+                        "estimate of the discretization error.");
+      prm.declare_entry("Discretization fraction",
+                        "0.1",
+                        Patterns::Double(0, 1),
+                        "See Stopping criterion.");
+      prm.declare_entry("Pre smoothing",
+                        "3",
+                        Patterns::Integer(0, 100),
+                        "Forward patch sweeps before the coarse correction.");
+      prm.declare_entry("Post smoothing",
+                        "3",
+                        Patterns::Integer(0, 100),
+                        "Backward patch sweeps after the coarse correction.");
+      prm.declare_entry("Cycle",
+                        "W",
+                        Patterns::Selection("V|W"),
+                        "Multigrid cycle.");
+      prm.declare_entry("Projection",
+                        "b",
+                        Patterns::Selection("a|b|c|d"),
+                        "Coarse obstacle for the normal displacement: a = eq. "
+                        "(26), b = eq. (27), c = eq. (28), d = no coarse "
+                        "constraint (infinity).");
+      prm.declare_entry("Initial guess",
+                        "coarse solution",
+                        Patterns::Selection(
+                          "zero|coarse solution|nested iteration|expression"),
+                        "zero; coarse solution: the exact solution on level 1 "
+                        "interpolated to level J (paper section 7); nested "
+                        "iteration: solve on every level in turn; expression: "
+                        "Data/Initial displacement.");
+      prm.declare_entry("Definiteness check max dofs",
+                        "20000",
+                        Patterns::Integer(0),
+                        "The definiteness check (paper eq. 10, section 7) forms "
+                        "the Schur complement of the functional onto the contact "
+                        "normal DoFs on the finest level with at most this many "
+                        "DoFs; indefiniteness there implies indefiniteness on "
+                        "every finer level (nested spaces). 0: skip the check.");
+      prm.leave_subsection();
+    }
+
+    void
+    Solver::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Solver");
+      const std::string t = prm.get("Type");
+      type = (t == "monotone multigrid" ? Type::monotone_multigrid :
+              t == "active set"         ? Type::active_set :
+                                          Type::projected_gauss_seidel);
+      tolerance      = prm.get_double("Tolerance");
+      max_iterations = prm.get_integer("Max iterations");
+      stopping = prm.get("Stopping criterion") == "tolerance" ?
+                   Stopping::tolerance :
+                   Stopping::discretization_accuracy;
+      discretization_fraction = prm.get_double("Discretization fraction");
+      pre_smoothing           = prm.get_integer("Pre smoothing");
+      post_smoothing          = prm.get_integer("Post smoothing");
+      cycle_gamma             = prm.get("Cycle") == "V" ? 1 : 2;
+      const std::string p     = prm.get("Projection");
+      projection              = (p == "a" ? Projection::a :
+                                 p == "b" ? Projection::b :
+                                 p == "c" ? Projection::c :
+                                            Projection::d);
+      const std::string g     = prm.get("Initial guess");
+      initial_guess = (g == "zero"             ? InitialGuess::zero :
+                       g == "coarse solution"  ? InitialGuess::coarse_solution :
+                       g == "nested iteration" ? InitialGuess::nested_iteration :
+                                                 InitialGuess::expression);
+      definiteness_max_dofs = prm.get_integer("Definiteness check max dofs");
+      prm.leave_subsection();
+    }
+
+
+    void
+    Output::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry("Directory",
+                        "output",
+                        Patterns::Anything(),
+                        "Directory for VTU, CSV and JSON output (created).");
+      prm.declare_entry("Write vtu",
+                        "true",
+                        Patterns::Bool(),
+                        "Write the solution as pvtu + vtu.");
+      prm.declare_entry("Verbose",
+                        "true",
+                        Patterns::Bool(),
+                        "Print one line per iteration and the timer summary.");
+      prm.leave_subsection();
+    }
+
+    void
+    Output::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      directory = prm.get("Directory");
+      write_vtu = prm.get_bool("Write vtu");
+      verbose   = prm.get_bool("Verbose");
+      prm.leave_subsection();
+      AssertThrow(!Utilities::trim(directory).empty(),
+                  ExcMessage("parameter 'Output/Directory' is empty"));
+    }
+
+
+    void
+    AllParameters::declare_parameters(ParameterHandler &prm)
+    {
+      Geometry::declare_parameters(prm);
+      Material::declare_parameters(prm);
+      Weights::declare_parameters(prm);
+      Data::declare_parameters(prm);
+      BoundaryConditions::declare_parameters(prm);
+      Solver::declare_parameters(prm);
+      Output::declare_parameters(prm);
+    }
+
+    void
+    AllParameters::parse_parameters(ParameterHandler &prm)
+    {
+      geometry.parse_parameters(prm);
+      material.parse_parameters(prm);
+      weights.parse_parameters(prm);
+      data.parse_parameters(prm);
+      boundary_conditions.parse_parameters(prm);
+      solver.parse_parameters(prm);
+      output.parse_parameters(prm);
+
+      auto &bc = boundary_conditions;
+      bc.dirichlet_components.assign(geometry.dimension, false);
+      if (bc.dirichlet_components_text == "all")
+        bc.dirichlet_components.assign(geometry.dimension, true);
+      else
+        for (const auto &c :
+             Utilities::split_string_list(bc.dirichlet_components_text, ','))
+          {
+            int k = -1;
+            try
+              {
+                k = Utilities::string_to_int(c);
+              }
+            catch (...)
+              {}
+            AssertThrow(k >= 0 && k < static_cast<int>(geometry.dimension),
+                        ExcMessage("parameter 'Boundary conditions/Dirichlet "
+                                   "components' has entry '" + c +
+                                   "'; valid: all, or components 0.." +
+                                   std::to_string(geometry.dimension - 1)));
+            bc.dirichlet_components[k] = true;
+          }
+    }
+  } // namespace Parameters
+} // namespace FoslsContact

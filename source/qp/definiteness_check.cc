@@ -1,0 +1,67 @@
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/sparse_direct.h>
+
+#include <fosls_contact/qp/definiteness_check.h>
+
+namespace FoslsContact
+{
+  DefinitenessCheck
+  DefinitenessCheck::run(const ConstrainedQP &qp)
+  {
+    DefinitenessCheck result;
+    const auto &      A = qp.matrix;
+    const auto        n = qp.size();
+    std::vector<types::global_dof_index> contact;
+    for (types::global_dof_index i = 0; i < n; ++i)
+      if (qp.role[i] == DoFRole::bounded)
+        contact.push_back(i);
+    result.n_contact_dofs = contact.size();
+    if (contact.empty())
+      return result;
+
+    // A_II with identity rows and columns on fixed and contact DoFs.
+    SparseMatrix<double> M(A.get_sparsity_pattern());
+    M.copy_from(A);
+    for (types::global_dof_index i = 0; i < n; ++i)
+      for (auto e = M.begin(i); e != M.end(i); ++e)
+        if (qp.role[i] != DoFRole::free || qp.role[e->column()] != DoFRole::free)
+          e->value() = (i == e->column()) ? 1. : 0.;
+    SparseDirectUMFPACK direct;
+    direct.initialize(M);
+
+    const unsigned int       nc = contact.size();
+    LAPACKFullMatrix<double> S(nc, nc);
+    Vector<double>           column(n), y(n), Ay(n);
+    for (unsigned int c = 0; c < nc; ++c)
+      {
+        // column = A_IC e_c
+        column = 0;
+        for (auto e = A.begin(contact[c]); e != A.end(contact[c]); ++e)
+          if (qp.role[e->column()] == DoFRole::free)
+            column[e->column()] = e->value(); // A symmetric
+        direct.vmult(y, column);
+        for (types::global_dof_index i = 0; i < n; ++i)
+          if (qp.role[i] != DoFRole::free)
+            y[i] = 0;
+        A.vmult(Ay, y);
+        for (unsigned int r = 0; r < nc; ++r)
+          S(r, c) = A.el(contact[r], contact[c]) - Ay[contact[r]];
+      }
+    for (unsigned int r = 0; r < nc; ++r)
+      for (unsigned int c = 0; c < nc; ++c)
+        S(r, c) /= std::sqrt(A.diag_element(contact[r]) *
+                             A.diag_element(contact[c]));
+    // symmetrize the round-off
+    for (unsigned int r = 0; r < nc; ++r)
+      for (unsigned int c = 0; c < r; ++c)
+        S(r, c) = S(c, r) = 0.5 * (S(r, c) + S(c, r));
+    Vector<double> eigenvalues;
+    FullMatrix<double> eigenvectors;
+    S.compute_eigenvalues_symmetric(-1e300, 1e300, 0., eigenvalues, eigenvectors);
+    result.min_relative_eigenvalue = eigenvalues.size() ? eigenvalues[0] : 1.;
+    for (unsigned int i = 0; i < eigenvalues.size(); ++i)
+      result.min_relative_eigenvalue =
+        std::min(result.min_relative_eigenvalue, eigenvalues[i]);
+    return result;
+  }
+} // namespace FoslsContact

@@ -1,0 +1,269 @@
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+
+#include <fosls_contact/scene/scene.h>
+
+#include <cmath>
+
+namespace FoslsContact
+{
+  namespace
+  {
+    bool
+    is_literal_zero(const std::string &expression)
+    {
+      for (const auto &c : Utilities::split_string_list(expression, ';'))
+        {
+          const std::string t = Utilities::trim(c);
+          if (!(t == "0" || t == "0.0" || t == "0." || t == "-0"))
+            return false;
+        }
+      return true;
+    }
+  } // namespace
+
+
+  template <int dim>
+  Scene<dim>::Scene(const Parameters::AllParameters &prm)
+    : geometry(prm.geometry)
+    , dirichlet_mask(prm.boundary_conditions.dirichlet_components)
+  {
+    const auto &bc = prm.boundary_conditions;
+    dirichlet_ids.insert(bc.dirichlet_ids.begin(), bc.dirichlet_ids.end());
+    neumann_ids.insert(bc.neumann_ids.begin(), bc.neumann_ids.end());
+    contact_ids.insert(bc.contact_ids.begin(), bc.contact_ids.end());
+
+    constants["pi"] = numbers::PI;
+    for (const auto &entry :
+         Utilities::split_string_list(prm.data.constants, ','))
+      {
+        const auto pair = Utilities::split_string_list(entry, '=');
+        AssertThrow(pair.size() == 2,
+                    ExcMessage("parameter 'Data/Constants' has entry '" + entry +
+                               "'; expected name=value"));
+        try
+          {
+            constants[pair[0]] = Utilities::string_to_double(pair[1]);
+          }
+        catch (...)
+          {
+            AssertThrow(false,
+                        ExcMessage("parameter 'Data/Constants': '" + pair[1] +
+                                   "' is not a number"));
+          }
+      }
+
+    const auto &data = prm.data;
+    if (!Utilities::trim(data.body_force).empty() &&
+        !is_literal_zero(data.body_force))
+      body_force_function = make_function(data.body_force, dim, "Data/Body force");
+    dirichlet_function =
+      make_function(data.dirichlet_values, dim, "Data/Dirichlet values");
+    traction_function = make_function(data.traction, dim, "Data/Traction");
+    if (has_contact())
+      {
+        gap_function    = make_function(data.gap, 1, "Data/Gap");
+        normal_function = make_function(data.obstacle_normal, dim, "Data/Obstacle normal");
+      }
+    if (!Utilities::trim(data.exact_displacement).empty())
+      exact_u_function =
+        make_function(data.exact_displacement, dim, "Data/Exact displacement");
+    if (!Utilities::trim(data.exact_stress).empty())
+      exact_sigma_function =
+        make_function(data.exact_stress, dim * dim, "Data/Exact stress");
+    if (prm.solver.initial_guess ==
+        Parameters::Solver::InitialGuess::expression)
+      initial_u_function = make_function(data.initial_displacement,
+                                         dim,
+                                         "Data/Initial displacement");
+  }
+
+
+  template <int dim>
+  std::unique_ptr<FunctionParser<dim>>
+  Scene<dim>::make_function(const std::string &expression,
+                            const unsigned int n_components,
+                            const std::string &name) const
+  {
+    std::vector<std::string> expressions;
+    for (const auto &c : Utilities::split_string_list(expression, ';'))
+      expressions.push_back(c);
+    AssertThrow(expressions.size() == n_components,
+                ExcMessage("parameter '" + name + "' = '" + expression +
+                           "' has " + std::to_string(expressions.size()) +
+                           " component(s) separated by ';', expected " +
+                           std::to_string(n_components)));
+    auto function = std::make_unique<FunctionParser<dim>>(n_components);
+    const std::string variables = (dim == 2 ? "x,y" : "x,y,z");
+    // deal.II parses lazily: initialize, then evaluate once so that a
+    // malformed expression is reported here, with the parameter's name, and
+    // not in the middle of the assembly.
+    try
+      {
+        function->initialize(variables, expressions, constants);
+        Point<dim> p;
+        for (unsigned int d = 0; d < dim; ++d)
+          p[d] = 0.123 + 0.1 * d;
+        Vector<double> values(n_components);
+        function->vector_value(p, values);
+      }
+    catch (const std::exception &e)
+      {
+        std::string what = e.what();
+        const auto  pos  = what.find("The parser said:");
+        std::string reason =
+          pos == std::string::npos ? std::string("malformed expression") :
+                                     Utilities::trim(what.substr(pos + 16));
+        reason = reason.substr(0, reason.find('\n'));
+        AssertThrow(false,
+                    ExcMessage("parameter '" + name + "' = '" + expression +
+                               "' is not a valid expression: " + reason));
+      }
+    return function;
+  }
+
+
+  template <int dim>
+  bool
+  Scene<dim>::is_dirichlet(const types::boundary_id id) const
+  {
+    return dirichlet_ids.count(id) > 0;
+  }
+
+  template <int dim>
+  bool
+  Scene<dim>::is_neumann(const types::boundary_id id) const
+  {
+    return neumann_ids.count(id) > 0;
+  }
+
+  template <int dim>
+  bool
+  Scene<dim>::is_contact(const types::boundary_id id) const
+  {
+    return contact_ids.count(id) > 0;
+  }
+
+
+  template <int dim>
+  Tensor<1, dim>
+  Scene<dim>::obstacle_normal(const Point<dim> &p) const
+  {
+    Tensor<1, dim> n;
+    for (unsigned int d = 0; d < dim; ++d)
+      n[d] = normal_function->value(p, d);
+    const double norm = n.norm();
+    AssertThrow(norm > 1e-12 && std::isfinite(norm),
+                ExcMessage("parameter 'Data/Obstacle normal' evaluates to a "
+                           "zero or non-finite vector at a contact point"));
+    return n / norm;
+  }
+
+
+  template <int dim>
+  void
+  Scene<dim>::make_coarse_mesh(Triangulation<dim> &tria) const
+  {
+    if (geometry.shape == Parameters::Geometry::Shape::box)
+      {
+        Point<dim>                p1, p2;
+        std::vector<unsigned int> repetitions(dim);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            p1[d]          = geometry.lower_corner[d];
+            p2[d]          = geometry.upper_corner[d];
+            repetitions[d] = geometry.subdivisions[d];
+          }
+        GridGenerator::subdivided_hyper_rectangle(tria, repetitions, p1, p2, true);
+      }
+    else
+      {
+        // The lower half of a disc: deal.II's half ball (cut plane
+        // perpendicular to x) turned by -90 degrees, refined to make a
+        // coarse mesh of useful size, then graded toward the lowest point
+        // in polar coordinates (angle from the downward direction and
+        // distance to the curved boundary), which keeps the circle and the
+        // flat top in place.
+        Assert(dim == 2, ExcInternalError());
+        Point<dim> center;
+        for (unsigned int d = 0; d < dim; ++d)
+          center[d] = geometry.center[d];
+        const double radius = geometry.radius;
+
+        Triangulation<dim> half;
+        GridGenerator::half_hyper_ball(half, Point<dim>(), radius);
+        half.refine_global(geometry.disc_refinements);
+        GridGenerator::flatten_triangulation(half, tria);
+
+        const double gamma = geometry.grading;
+        GridTools::transform(
+          [gamma, radius, center](const Point<dim> &p) {
+            // p is in the half ball x >= 0 around the origin.
+            const double r     = p.norm();
+            const double theta = std::atan2(p[1], p[0]); // in [-pi/2, pi/2]
+            const double half_pi = numbers::PI / 2;
+            const double t       = std::abs(theta) / half_pi;
+            const double theta_g =
+              (theta < 0 ? -1. : 1.) * half_pi * std::pow(t, gamma);
+            const double s   = 1. - r / radius;
+            const double r_g = radius * (1. - std::pow(s, gamma));
+            // rotate by -90 degrees: the x axis (theta = 0) points down.
+            Point<dim> q;
+            q[0] = center[0] + r_g * std::sin(theta_g);
+            q[1] = center[1] - r_g * std::cos(theta_g);
+            return q;
+          },
+          tria);
+
+        // boundary ids: 0 curved, 1 flat top (by position).
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              {
+                const bool top =
+                  std::abs(face->center()[1] - center[1]) < 1e-10 * radius &&
+                  std::abs(face->vertex(0)[1] - center[1]) < 1e-10 * radius;
+                face->set_boundary_id(top ? 1 : 0);
+                face->set_manifold_id(top ? numbers::flat_manifold_id : 0);
+              }
+        tria.set_manifold(0, SphericalManifold<dim>(center));
+      }
+
+    // Every boundary id of the mesh needs exactly one condition, and every
+    // named id must exist (a typo would otherwise silently drop a condition).
+    std::set<types::boundary_id> mesh_ids;
+    for (const auto id : tria.get_boundary_ids())
+      mesh_ids.insert(id);
+    for (const auto id : mesh_ids)
+      AssertThrow(is_dirichlet(id) || is_neumann(id) || is_contact(id),
+                  ExcMessage("boundary id " + std::to_string(id) +
+                             " of the mesh has no condition: name it in "
+                             "'Boundary conditions' (Dirichlet, Neumann or "
+                             "Contact boundary ids)"));
+    for (const auto &ids : {dirichlet_ids, neumann_ids, contact_ids})
+      for (const auto id : ids)
+        AssertThrow(mesh_ids.count(id) > 0,
+                    ExcMessage("boundary id " + std::to_string(id) +
+                               " named in 'Boundary conditions' does not exist "
+                               "on this mesh"));
+  }
+
+
+  template <int dim>
+  double
+  Scene<dim>::mesh_size_ratio(const Triangulation<dim> &tria)
+  {
+    double h_max = 0, h_min = std::numeric_limits<double>::max();
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        h_max = std::max(h_max, cell->diameter());
+        h_min = std::min(h_min, cell->diameter());
+      }
+    return h_max / h_min;
+  }
+
+  template class Scene<2>;
+  template class Scene<3>;
+} // namespace FoslsContact

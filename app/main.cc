@@ -116,10 +116,21 @@ main(int argc, char *argv[])
             }
           else if (arg.rfind("--set=", 0) == 0)
             overrides.push_back(arg.substr(6));
+          else if (arg == "--print-parameters")
+            {
+              // every parameter with its default, pattern and documentation,
+              // as JSON: scripts/make_parameter_doc.py turns it into
+              // doc/parameters.md
+              dealii::ParameterHandler prm;
+              Parameters::AllParameters::declare_parameters(prm);
+              prm.print_parameters(std::cout, dealii::ParameterHandler::JSON);
+              return 0;
+            }
           else if (arg == "--help" || arg == "-h")
             {
               std::cout << "usage: fosls-contact SCENE.prm [--set "
-                           "\"Section/Name=value\" ...]\n";
+                           "\"Section/Name=value\" ...]\n"
+                           "       fosls-contact --print-parameters\n";
               return 0;
             }
           else

@@ -133,14 +133,6 @@ namespace FoslsContact
 
 
   double
-  ConstrainedQP::reference_norm(const Vector<double> &x) const
-  {
-    return std::sqrt(std::max(0., matrix.matrix_norm_square(x) -
-                                    matrix_compl.matrix_norm_square(x)));
-  }
-
-
-  double
   ConstrainedQP::energy_norm(const Vector<double> &d) const
   {
     return std::sqrt(std::max(0., matrix.matrix_norm_square(d)));

@@ -77,12 +77,7 @@ namespace FoslsContact
      * where A is positive definite).
      */
     double energy_norm(const Vector<double> &d) const;
-    /**
-     * A norm of a whole iterate, to make corrections relative: the
-     * least-squares part sqrt(x^T (A - A_compl) x), which is a sum of
-     * squares (A itself need not be definite on fixed DoFs).
-     */
-    double reference_norm(const Vector<double> &x) const;
+
   };
 } // namespace FoslsContact
 

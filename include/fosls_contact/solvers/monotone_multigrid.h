@@ -1,17 +1,94 @@
 #ifndef fosls_contact_solvers_monotone_multigrid_h
 #define fosls_contact_solvers_monotone_multigrid_h
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+
 #include <fosls_contact/discretization/level_transfer.h>
+#include <fosls_contact/parameters.h>
+#include <fosls_contact/solvers/multilevel_hierarchy.h>
+#include <fosls_contact/solvers/patch_smoother.h>
 #include <fosls_contact/solvers/qp_solver.h>
+
 namespace FoslsContact
 {
+  /**
+   * The monotone multilevel method of paper sections 4.2, 5 and 6.
+   *
+   * A cycle on level l minimizes the level functional
+   * Q_l(v) = 1/2 v^T A_l v - r_l^T v over v <= ub_l by
+   *  1. nu_1 forward sweeps of the patch smoother,
+   *  2. gamma times (V: 1, W: 2) a coarse correction: the truncated
+   *     prolongation P~ drops the fine DoFs that are fixed or active
+   *     (eq. 34), the coarse operator is its Galerkin product
+   *     A_{l-1} = P~^T A_l P~, the coarse obstacle is the projection of
+   *     the fine defect obstacle (eqs. 31-32, 35-36, CoarseObstacles), and
+   *     the coarse problem is solved by one cycle on level l-1,
+   *  3. nu_2 backward sweeps;
+   * on level 0 the box-constrained problem is solved exactly.
+   *
+   * Because A_{l-1} is the Galerkin product, Q_{l-1}(c) = Q_l(v + P~ c) -
+   * Q_l(v): every coarse correction minimizes the fine functional itself,
+   * so J never increases. This is checked at every sub-step (patch steps
+   * and coarse corrections) and reported to the monitor. Should a coarse
+   * correction leave the fine feasible set (only possible when the
+   * obstacle normals differ between neighbouring vertices), it is shortened
+   * to the feasible part, which by convexity along the line still
+   * decreases J; the monitor counts these "feasibility dampings".
+   *
+   * Galerkin operators keep the sparsity of the untruncated product, so a
+   * change of the truncation only recomputes values; they are recomputed
+   * only when the truncation or the finer operator changed.
+   */
   template <int dim>
   class MonotoneMultigrid : public QPSolver
   {
   public:
-    MonotoneMultigrid(const Discretization<dim> &, const LevelTransfer<dim> &,
-                      const unsigned int, const Parameters::Solver &) {}
-    void solve(const ConstrainedQP &, Vector<double> &, Monitor &) override
-    { AssertThrow(false, ExcNotImplemented()); }
+    MonotoneMultigrid(const Discretization<dim> & discretization,
+                      const LevelTransfer<dim> &  transfer,
+                      const unsigned int          finest_level,
+                      const Parameters::Solver &  parameters);
+
+    void solve(const ConstrainedQP &qp,
+               Vector<double> &     x,
+               Monitor &            monitor) override;
+
+  private:
+    /** One cycle on level @p l for Q_l with matrix @p A; @p v is updated. */
+    void cycle(const unsigned int          l,
+               const SparseMatrix<double> &A,
+               const Vector<double> &      r,
+               const Vector<double> &      ub,
+               const std::vector<DoFRole> &role,
+               Vector<double> &            v);
+
+    /** Exact solution of the box-constrained coarsest problem. */
+    void coarse_solve(const SparseMatrix<double> &A,
+                      const Vector<double> &      r,
+                      const Vector<double> &      ub,
+                      const std::vector<DoFRole> &role,
+                      Vector<double> &            v);
+
+    /** Truncated prolongation and Galerkin operator of level l - 1. */
+    void update_coarse_operator(const unsigned int          l,
+                                const SparseMatrix<double> &A,
+                                const std::vector<bool> &   truncated);
+
+    const MultilevelHierarchy<dim> hierarchy;
+    const Parameters::Solver       parameters;
+    const unsigned int             finest;
+
+    PatchSmoother                                      smoother;
+    std::vector<SparsityPattern>                       galerkin_sparsity, product_sparsity;
+    std::vector<SparseMatrix<double>>                  galerkin, product;
+    std::vector<SparseMatrix<double>>                  truncated_prolongation;
+    std::vector<std::vector<bool>>                     truncation_used;
+    std::vector<unsigned int>                          version, version_used;
+    std::vector<bool>                                  built;
+    Monitor *                                          monitor = nullptr;
+    unsigned int                                       n_increases = 0;
+    unsigned int                                       n_dampings  = 0;
   };
-}
+} // namespace FoslsContact
+
 #endif

@@ -1,0 +1,36 @@
+#ifndef fosls_contact_solvers_coarse_obstacles_h
+#define fosls_contact_solvers_coarse_obstacles_h
+
+#include <deal.II/lac/vector.h>
+
+#include <fosls_contact/parameters.h>
+#include <fosls_contact/solvers/multilevel_hierarchy.h>
+
+namespace FoslsContact
+{
+  /**
+   * The non-linear projections of paper section 5 that turn the defect
+   * obstacle of a fine level, d_h = ub_h - v_h (+inf at unbounded and
+   * truncated DoFs, eqs. 35-36), into the obstacle of the next coarser
+   * level, such that P ub_H <= d_h wherever the fine constraint is
+   * enforced (K_H subset of K_h):
+   *
+   * - displacement, per coarse contact vertex (eq. 29), with the edge
+   *   values a) eq. (26), b) eq. (27), c) eq. (28), or d) +infinity;
+   *   in 3D the centers of the coarse contact faces, which no edge covers,
+   *   enter as in b);
+   * - normal stress, per coarse contact face: the minimum over its sons
+   *   (eq. 30).
+   */
+  class CoarseObstacles
+  {
+  public:
+    static void project(const Parameters::Solver::Projection projection,
+                        const std::vector<VertexRelation> &  vertices,
+                        const std::vector<FaceRelation> &    faces,
+                        const Vector<double> &               fine_defect,
+                        Vector<double> &                     coarse_obstacle);
+  };
+} // namespace FoslsContact
+
+#endif

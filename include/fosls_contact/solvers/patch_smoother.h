@@ -1,0 +1,73 @@
+#ifndef fosls_contact_solvers_patch_smoother_h
+#define fosls_contact_solvers_patch_smoother_h
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/multigrid/mg_smoother.h>
+
+#include <fosls_contact/discretization/discretization.h>
+#include <fosls_contact/solvers/box_qp.h>
+
+namespace FoslsContact
+{
+  /**
+   * Projected relaxation over Arnold-Falk-Winther vertex patches, as an
+   * MGSmoother: smooth(level, v, r) minimizes 1/2 v^T A v - r^T v, patch
+   * after patch, exactly within the obstacles v <= ub set with
+   * set_obstacles() (paper eqs. 19-24). The patch spans the vertex's
+   * displacement and the fluxes (all stress rows) of the faces at the
+   * vertex, which is what makes relaxation effective for the large
+   * divergence-free part of H(div) (Arnold, Falk, Winther).
+   *
+   * The patch matrices and their inverses are set up once per level
+   * matrix (initialize_level), which happens only when a Galerkin operator
+   * changes, i.e. when the truncation changes.
+   */
+  class PatchSmoother : public MGSmoother<Vector<double>>
+  {
+  public:
+    explicit PatchSmoother(const unsigned int n_levels);
+
+    /**
+     * Factorize the patches of level @p l for @p matrix (which must stay
+     * alive). Fixed DoFs and DoFs with a zero diagonal (switched off by the
+     * truncation of the finer level) are left out of every patch.
+     */
+    void initialize_level(const unsigned int                                      l,
+                          const SparseMatrix<double> &                            matrix,
+                          const std::vector<std::vector<types::global_dof_index>> &patches,
+                          const std::vector<DoFRole> &                            role);
+
+    /** Obstacles of level @p l: the upper bounds of bounded DoFs. */
+    void set_obstacles(const unsigned int l, const Vector<double> &upper_bounds);
+    /** Forward (pre-smoothing) or backward (post-smoothing) patch order. */
+    void set_backward(const bool backward) { this->backward = backward; }
+
+    void smooth(const unsigned int    level,
+                Vector<double> &      v,
+                const Vector<double> &r) const override;
+    void clear() override;
+
+    /** Patch steps whose objective change was positive beyond round-off. */
+    unsigned int energy_increases() const { return n_increases; }
+
+  private:
+    struct Patch
+    {
+      std::vector<types::global_dof_index> dofs;
+      std::vector<bool>                    bounded;
+      BoxQP                                qp;
+    };
+    struct Level
+    {
+      const SparseMatrix<double> *matrix    = nullptr;
+      const Vector<double> *      obstacles = nullptr;
+      std::vector<Patch>          patches;
+    };
+    std::vector<Level>   levels;
+    bool                 backward    = false;
+    mutable unsigned int n_increases = 0;
+  };
+} // namespace FoslsContact
+
+#endif

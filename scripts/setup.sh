@@ -35,7 +35,7 @@ fosls_setup() (
       sudo=(sudo -E)
     fi
     "${sudo[@]}" apt-get update -q >&2
-    "${sudo[@]}" apt-get install -y -q --no-install-recommends \
+    "${sudo[@]}" apt-get install -y -q \
       "${missing[@]}" >&2
   fi
 

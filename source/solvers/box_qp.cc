@@ -7,9 +7,12 @@ namespace FoslsContact
 {
   BoxQP::BoxQP(const FullMatrix<double> &M)
     : matrix(M)
-    , inverse(M.m(), M.n())
   {
-    inverse.invert(M);
+    // gauss_jordan pivots; FullMatrix::invert uses cofactor formulas for
+    // n <= 4, which lose all digits on the ill-conditioned patches of
+    // large C_eq on distorted cells
+    inverse = M;
+    inverse.gauss_jordan();
   }
 
 

@@ -1,0 +1,88 @@
+#ifndef fosls_contact_output_monitor_h
+#define fosls_contact_output_monitor_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <fosls_contact/parameters.h>
+#include <fosls_contact/qp/constrained_qp.h>
+
+#include <string>
+#include <vector>
+
+namespace FoslsContact
+{
+  /** What is recorded after each iteration of any solver. */
+  struct IterationRecord
+  {
+    unsigned int    iteration = 0;
+    FunctionalValue functional;
+    double          correction    = 0; ///< energy norm of x_k - x_{k-1}
+    double          rate          = 0; ///< correction_k / correction_{k-1}
+    unsigned int    active        = 0;
+    double          violation     = 0;
+    double          wall_seconds  = 0;
+  };
+
+  /**
+   * The one place where solvers report: every solver calls report() after
+   * each iteration, and the monitor computes J and its parts, the
+   * correction, the rate, the active set and the violation, prints one
+   * line, decides whether to stop, and later writes convergence.csv.
+   * Solvers therefore never print on their own and all stop by the same
+   * rule.
+   */
+  class Monitor
+  {
+  public:
+    Monitor(const ConstrainedQP &        qp,
+            const Parameters::Solver &   parameters,
+            const ConditionalOStream &   pcout,
+            const std::string &          solver_name);
+
+    /** Record the starting iterate as iteration 0. */
+    void start(const Vector<double> &x);
+
+    /**
+     * Record iteration @p x (after @p x_old); print; return true when the
+     * stopping criterion is met or the iteration limit is reached
+     * (converged() tells which).
+     */
+    bool report(const Vector<double> &x, const Vector<double> &x_old);
+
+    /** A solver found J(new) > J(old) at a sub-step. */
+    void note_energy_increase() { ++n_energy_increases; }
+    /** A solver had to shorten a coarse correction to stay feasible. */
+    void note_feasibility_damping() { ++n_feasibility_dampings; }
+
+    /** For solvers that detect convergence themselves (active set). */
+    void set_converged() { has_converged = true; }
+
+    unsigned int energy_increases() const { return n_energy_increases; }
+    unsigned int feasibility_dampings() const { return n_feasibility_dampings; }
+    unsigned int iterations() const { return history.size() - 1; }
+    bool         converged() const { return has_converged; }
+    const std::vector<IterationRecord> &get_history() const { return history; }
+
+    /** Geometric mean of the rates of the last (up to) 5 iterations. */
+    double asymptotic_rate() const;
+
+    /** CSV text of the history (the caller writes it atomically). */
+    std::string csv() const;
+
+    const std::string &name() const { return solver_name; }
+
+  private:
+    const ConstrainedQP &         qp;
+    const Parameters::Solver      parameters;
+    const ConditionalOStream &    pcout;
+    const std::string             solver_name;
+    std::vector<IterationRecord>  history;
+    Timer                         timer;
+    unsigned int                  n_energy_increases     = 0;
+    unsigned int                  n_feasibility_dampings = 0;
+    bool                          has_converged          = false;
+  };
+} // namespace FoslsContact
+
+#endif

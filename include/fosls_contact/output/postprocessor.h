@@ -1,0 +1,69 @@
+#ifndef fosls_contact_output_postprocessor_h
+#define fosls_contact_output_postprocessor_h
+
+#include <deal.II/lac/vector.h>
+
+#include <fosls_contact/discretization/discretization.h>
+#include <fosls_contact/output/monitor.h>
+#include <fosls_contact/parameters.h>
+#include <fosls_contact/qp/constrained_qp.h>
+
+#include <map>
+#include <string>
+
+namespace FoslsContact
+{
+  /** Error norms against the exact solution of a manufactured scene. */
+  struct ErrorNorms
+  {
+    double u_l2 = 0, u_h1_semi = 0, sigma_l2 = 0, sigma_div = 0;
+    double u_h1() const { return std::sqrt(u_l2 * u_l2 + u_h1_semi * u_h1_semi); }
+    double sigma_hdiv() const
+    {
+      return std::sqrt(sigma_l2 * sigma_l2 + sigma_div * sigma_div);
+    }
+  };
+
+  /**
+   * The last box of the data path: rotates the solution back to Cartesian
+   * coordinates and computes what users look at (contact force, contact
+   * table, error norms), then writes every output file. All files are first
+   * written into a staging directory and then renamed into the output
+   * directory, so an interrupted run never leaves a half-written file.
+   */
+  template <int dim>
+  class Postprocessor
+  {
+  public:
+    Postprocessor(const Discretization<dim> &   discretization,
+                  const Parameters::AllParameters &parameters);
+
+    /** Solution (finest level, rotated basis) -> Cartesian active vector. */
+    Vector<double> cartesian_active(const Vector<double> &x_rotated) const;
+
+    /** Total contact force: the integral of sigma n over Gamma_C. */
+    Tensor<1, dim> contact_force(const Vector<double> &active_solution) const;
+
+    /** Error norms against Data/Exact displacement and Exact stress. */
+    ErrorNorms errors(const Vector<double> &active_solution) const;
+
+    /** One row per contact vertex of the finest level. */
+    std::string contact_table(const Vector<double> &x_rotated) const;
+
+    /**
+     * Write VTU (+pvtu), contact.csv, convergence.csv, summary.json and
+     * used_parameters.prm. @p summary holds the JSON fields (already
+     * formatted values).
+     */
+    void write(const Vector<double> &                     x_rotated,
+               const Monitor &                            monitor,
+               const std::map<std::string, std::string> &summary,
+               const std::string &                        used_parameters) const;
+
+  private:
+    const Discretization<dim> &     discretization;
+    const Parameters::AllParameters parameters;
+  };
+} // namespace FoslsContact
+
+#endif

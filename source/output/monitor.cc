@@ -1,0 +1,131 @@
+#include <fosls_contact/output/monitor.h>
+
+#include <cmath>
+#include <limits>
+#include <iomanip>
+#include <sstream>
+
+namespace FoslsContact
+{
+  Monitor::Monitor(const ConstrainedQP &     qp,
+                   const Parameters::Solver &parameters,
+                   const ConditionalOStream &pcout,
+                   const std::string &       solver_name)
+    : qp(qp)
+    , parameters(parameters)
+    , pcout(pcout)
+    , solver_name(solver_name)
+  {}
+
+
+  void
+  Monitor::start(const Vector<double> &x)
+  {
+    AssertThrow(std::isfinite(x.l2_norm()),
+                ExcMessage("the starting iterate is not finite"));
+    timer.restart();
+    history.clear();
+    IterationRecord r;
+    r.functional = qp.parts(x);
+    r.active     = qp.n_active(x);
+    r.violation  = qp.max_violation(x);
+    history.push_back(r);
+    pcout << "  " << solver_name << ": start  J = " << std::scientific
+          << std::setprecision(6) << r.functional.total
+          << "  active = " << r.active << std::endl;
+  }
+
+
+  bool
+  Monitor::report(const Vector<double> &x, const Vector<double> &x_old)
+  {
+    Vector<double> d(x);
+    d -= x_old;
+    IterationRecord r;
+    r.iteration    = history.size();
+    r.functional   = qp.parts(x);
+    r.correction   = qp.energy_norm(d);
+    r.active       = qp.n_active(x);
+    r.violation    = qp.max_violation(x);
+    r.wall_seconds = timer.wall_time();
+    const double previous = history.back().correction;
+    r.rate = (history.size() > 1 && previous > 0) ? r.correction / previous : 0.;
+
+    // Iterates never silently become NaN: stop the run with a message.
+    AssertThrow(std::isfinite(r.functional.total) && std::isfinite(r.correction),
+                ExcMessage(solver_name + ": the iterate became NaN/Inf at "
+                           "iteration " + std::to_string(r.iteration)));
+    history.push_back(r);
+
+    // The solution of a least-squares problem has a small energy (J(x*)
+    // is the discretization error), so corrections are measured relative
+    // to the first one: the criterion is an error reduction factor.
+    const double first  = history.size() > 1 ? history[1].correction : 0.;
+    const double norm_x = std::max(first, 1e-300);
+    // Corrections with 1/2 |d|_A^2 below the round-off of J cannot be
+    // resolved by any method that decreases J: that is convergence too.
+    const double J_terms = 0.5 * std::abs(qp.matrix.matrix_norm_square(x)) +
+                           std::abs(qp.rhs * x) + std::abs(qp.constant);
+    const double round_off =
+      std::sqrt(20. * std::numeric_limits<double>::epsilon() * J_terms);
+    bool stop = r.correction <= round_off;
+    if (parameters.stopping == Parameters::Solver::Stopping::tolerance)
+      stop |= r.correction <= parameters.tolerance * norm_x;
+    else
+      {
+        // J(x) - J(x*) = 1/2 |x - x*|_A^2 (on the final active set) and the
+        // algebraic error is about |d|_A rho/(1-rho); J(x) itself estimates
+        // the squared discretization error.
+        const double rho = std::min(std::max(asymptotic_rate(), 0.05), 0.95);
+        const double algebraic = r.correction * rho / (1. - rho) / std::sqrt(2.);
+        stop |= history.size() > 2 &&
+               algebraic <= parameters.discretization_fraction *
+                              std::sqrt(std::max(r.functional.total, 0.));
+      }
+    has_converged = stop;
+    const bool out_of_iterations = r.iteration >= parameters.max_iterations;
+
+    pcout << "  " << solver_name << ": it " << std::setw(3) << r.iteration
+          << "  J = " << std::scientific << std::setprecision(6)
+          << r.functional.total << "  |dx|_A/|dx_1|_A = " << std::setprecision(2)
+          << r.correction / norm_x << "  rate = " << std::fixed
+          << std::setprecision(3) << r.rate << "  active = " << r.active
+          << std::endl;
+    return stop || out_of_iterations;
+  }
+
+
+  double
+  Monitor::asymptotic_rate() const
+  {
+    // the first iterations (nonlinear phase, paper section 7) are left out
+    const unsigned int n     = history.size();
+    const unsigned int first = std::max(2u, n > 5 ? n - 5 : 2u);
+    double             log_sum = 0;
+    unsigned int       count   = 0;
+    for (unsigned int k = first; k < n; ++k)
+      if (history[k].rate > 0)
+        {
+          log_sum += std::log(history[k].rate);
+          ++count;
+        }
+    return count > 0 ? std::exp(log_sum / count) : 0.;
+  }
+
+
+  std::string
+  Monitor::csv() const
+  {
+    std::ostringstream out;
+    out << "iteration,functional,functional_eq,functional_const,"
+           "functional_compl,correction,rate,active,violation,wall_seconds\n";
+    out << std::setprecision(12);
+    for (const auto &r : history)
+      out << r.iteration << ',' << r.functional.total << ',' << r.functional.eq
+          << ',' << r.functional.constitutive << ','
+          << r.functional.complementarity << ',' << r.correction << ','
+          << r.rate << ',' << r.active << ',' << r.violation << ','
+          << r.wall_seconds << '\n';
+    return out.str();
+  }
+} // namespace FoslsContact

@@ -1,0 +1,353 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <fosls_contact/assembly/fosls_assembler.h>
+#include <fosls_contact/output/postprocessor.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace FoslsContact
+{
+  namespace
+  {
+    /** div sigma + f, point by point, from the component gradients. */
+    template <int dim>
+    class EquilibriumResidual : public DataPostprocessorVector<dim>
+    {
+    public:
+      explicit EquilibriumResidual(const Scene<dim> &scene)
+        : DataPostprocessorVector<dim>("div_sigma_plus_f",
+                                       update_gradients |
+                                         update_quadrature_points)
+        , scene(scene)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>> &computed) const override
+      {
+        Vector<double> f(dim);
+        for (unsigned int q = 0; q < computed.size(); ++q)
+          {
+            if (scene.has_body_force())
+              scene.body_force().vector_value(inputs.evaluation_points[q], f);
+            for (unsigned int m = 0; m < dim; ++m)
+              {
+                double div = 0;
+                for (unsigned int k = 0; k < dim; ++k)
+                  div += inputs.solution_gradients[q][dim + m * dim + k][k];
+                computed[q][m] = div + f[m];
+              }
+          }
+      }
+
+    private:
+      const Scene<dim> &scene;
+    };
+
+    void
+    write_file(const std::filesystem::path &path, const std::string &text)
+    {
+      std::ofstream out(path);
+      out << text;
+      AssertThrow(out.good(), ExcMessage("cannot write file " + path.string()));
+    }
+  } // namespace
+
+
+  template <int dim>
+  Postprocessor<dim>::Postprocessor(const Discretization<dim> &       discretization,
+                                    const Parameters::AllParameters &parameters)
+    : discretization(discretization)
+    , parameters(parameters)
+  {}
+
+
+  template <int dim>
+  Vector<double>
+  Postprocessor<dim>::cartesian_active(const Vector<double> &x_rotated) const
+  {
+    Vector<double> x = x_rotated;
+    discretization.rotate_to_cartesian(discretization.finest_level(), x);
+    return discretization.to_active(x);
+  }
+
+
+  template <int dim>
+  Tensor<1, dim>
+  Postprocessor<dim>::contact_force(const Vector<double> &solution) const
+  {
+    const auto &          scene = discretization.get_scene();
+    Tensor<1, dim>        force;
+    if (!scene.has_contact())
+      return force;
+    const QGauss<dim - 1> quadrature(3);
+    FEFaceValues<dim>     fe_face(discretization.get_mapping(),
+                              discretization.get_fe(),
+                              quadrature,
+                              update_values | update_normal_vectors |
+                                update_JxW_values);
+    std::vector<Vector<double>> values(quadrature.size(),
+                                       Vector<double>(dim + dim * dim));
+    for (const auto &cell :
+         discretization.get_dof_handler().active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->at_boundary(f) && scene.is_contact(cell->face(f)->boundary_id()))
+          {
+            fe_face.reinit(cell, f);
+            fe_face.get_function_values(solution, values);
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              for (unsigned int m = 0; m < dim; ++m)
+                for (unsigned int k = 0; k < dim; ++k)
+                  force[m] += values[q][dim + m * dim + k] *
+                              fe_face.normal_vector(q)[k] * fe_face.JxW(q);
+          }
+    return force;
+  }
+
+
+  template <int dim>
+  ErrorNorms
+  Postprocessor<dim>::errors(const Vector<double> &solution) const
+  {
+    const auto &scene = discretization.get_scene();
+    ErrorNorms  e;
+    if (!scene.has_exact_solution())
+      return e;
+    const QGauss<dim> quadrature(4);
+    FEValues<dim>     fe_values(discretization.get_mapping(),
+                            discretization.get_fe(),
+                            quadrature,
+                            update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values);
+    const FEValuesExtractors::Vector displacement(0);
+    const unsigned int               nq = quadrature.size();
+    std::vector<Tensor<1, dim>>      u(nq);
+    std::vector<Tensor<2, dim>>      grad_u(nq);
+    std::vector<Tensor<1, dim>>      row(nq);
+    std::vector<double>              div(nq);
+    const Function<dim> *            exact_sigma = scene.exact_stress();
+
+    for (const auto &cell :
+         discretization.get_dof_handler().active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_values(solution, u);
+        fe_values[displacement].get_function_gradients(solution, grad_u);
+        for (unsigned int q = 0; q < nq; ++q)
+          {
+            const Point<dim> &p = fe_values.quadrature_point(q);
+            for (unsigned int k = 0; k < dim; ++k)
+              {
+                const double           du = scene.exact_displacement().value(p, k) - u[q][k];
+                const Tensor<1, dim> dg =
+                  scene.exact_displacement().gradient(p, k) - grad_u[q][k];
+                e.u_l2 += du * du * fe_values.JxW(q);
+                e.u_h1_semi += dg * dg * fe_values.JxW(q);
+              }
+          }
+        if (exact_sigma == nullptr)
+          continue;
+        for (unsigned int m = 0; m < dim; ++m)
+          {
+            const FEValuesExtractors::Vector sigma_row(dim + m * dim);
+            fe_values[sigma_row].get_function_values(solution, row);
+            fe_values[sigma_row].get_function_divergences(solution, div);
+            for (unsigned int q = 0; q < nq; ++q)
+              {
+                const Point<dim> &p         = fe_values.quadrature_point(q);
+                double            exact_div = 0;
+                for (unsigned int k = 0; k < dim; ++k)
+                  {
+                    const double ds =
+                      exact_sigma->value(p, m * dim + k) - row[q][k];
+                    e.sigma_l2 += ds * ds * fe_values.JxW(q);
+                    exact_div += exact_sigma->gradient(p, m * dim + k)[k];
+                  }
+                e.sigma_div += (exact_div - div[q]) * (exact_div - div[q]) *
+                               fe_values.JxW(q);
+              }
+          }
+      }
+    e.u_l2      = std::sqrt(e.u_l2);
+    e.u_h1_semi = std::sqrt(e.u_h1_semi);
+    e.sigma_l2  = std::sqrt(e.sigma_l2);
+    e.sigma_div = std::sqrt(e.sigma_div);
+    return e;
+  }
+
+
+  template <int dim>
+  std::string
+  Postprocessor<dim>::contact_table(const Vector<double> &x) const
+  {
+    const auto &       level = discretization.level(discretization.finest_level());
+    std::ostringstream out;
+    out << (dim == 2 ? "x,y" : "x,y,z") << ",u_n,gap,sigma_nn,active\n";
+    out << std::setprecision(10);
+    // sigma_nn at a vertex: mean over the contact faces that contain it.
+    std::map<unsigned int, std::pair<double, unsigned int>> face_mean;
+    for (const auto &cell : discretization.get_dof_handler()
+                              .mg_cell_iterators_on_level(discretization.finest_level()))
+      for (const unsigned int f : cell->face_indices())
+        if (cell->at_boundary(f) &&
+            discretization.get_scene().is_contact(cell->face(f)->boundary_id()))
+          {
+            const auto   face = cell->face(f);
+            const double s    = x[level.face_dofs.at(face->index())[0]];
+            for (const unsigned int v : face->vertex_indices())
+              {
+                auto &entry = face_mean[face->vertex_index(v)];
+                entry.first += s;
+                entry.second += 1;
+              }
+          }
+    for (const auto &cv : level.contact_vertices)
+      {
+        const double un = x[cv.normal_dof];
+        const auto   it = face_mean.find(cv.vertex_index);
+        const double snn =
+          it == face_mean.end() ? 0. : it->second.first / it->second.second;
+        for (unsigned int d = 0; d < dim; ++d)
+          out << cv.point[d] << ',';
+        out << un << ',' << cv.gap << ',' << snn << ','
+            << (un >= cv.gap - 1e-12 * std::max(1., std::abs(cv.gap)) ? 1 : 0)
+            << '\n';
+      }
+    return out.str();
+  }
+
+
+  template <int dim>
+  void
+  Postprocessor<dim>::write(const Vector<double> &                     x,
+                            const Monitor &                            monitor,
+                            const std::map<std::string, std::string> &summary,
+                            const std::string &used_parameters) const
+  {
+    namespace fs = std::filesystem;
+    const fs::path directory(parameters.output.directory);
+    fs::create_directories(directory);
+    const fs::path staging =
+      directory / (".staging-" + std::to_string(::getpid()));
+    fs::remove_all(staging);
+    fs::create_directories(staging);
+
+    std::vector<std::string> files;
+    if (parameters.output.write_vtu)
+      {
+        const Vector<double> solution = cartesian_active(x);
+        DataOut<dim>         data_out;
+        data_out.attach_dof_handler(discretization.get_dof_handler());
+        std::vector<std::string> names(dim, "u");
+        std::vector<DataComponentInterpretation::DataComponentInterpretation>
+          interpretation(dim + dim * dim,
+                         DataComponentInterpretation::component_is_part_of_vector);
+        for (unsigned int m = 0; m < dim; ++m)
+          for (unsigned int k = 0; k < dim; ++k)
+            names.push_back("sigma_row" + std::to_string(m));
+        data_out.add_data_vector(solution, names, DataOut<dim>::type_dof_data,
+                                 interpretation);
+        EquilibriumResidual<dim> equilibrium(discretization.get_scene());
+        data_out.add_data_vector(solution, equilibrium);
+
+        // cellwise constitutive residual |A sigma - eps(u)|_{L2(K)} (the
+        // local least-squares error indicator) and contact status
+        const auto &tria = discretization.get_triangulation();
+        Vector<float> indicator(tria.n_active_cells()), status(tria.n_active_cells());
+        {
+          const QGauss<dim> quadrature(3);
+          FEValues<dim>     fe_values(discretization.get_mapping(),
+                                  discretization.get_fe(),
+                                  quadrature,
+                                  update_values | update_gradients |
+                                    update_JxW_values);
+          const FEValuesExtractors::Vector displacement(0);
+          std::vector<Tensor<2, dim>>      eps(quadrature.size());
+          std::vector<Tensor<1, dim>>      row(quadrature.size());
+          std::vector<Tensor<2, dim>>      sigma(quadrature.size());
+          const auto &level = discretization.level(discretization.finest_level());
+          std::map<unsigned int, bool> active_vertex;
+          for (const auto &cv : level.contact_vertices)
+            active_vertex[cv.vertex_index] =
+              x[cv.normal_dof] >= cv.gap - 1e-12 * std::max(1., std::abs(cv.gap));
+          for (const auto &cell :
+               discretization.get_dof_handler().active_cell_iterators())
+            {
+              fe_values.reinit(cell);
+              std::vector<SymmetricTensor<2, dim>> sym(quadrature.size());
+              fe_values[displacement].get_function_symmetric_gradients(solution, sym);
+              for (unsigned int m = 0; m < dim; ++m)
+                {
+                  fe_values[FEValuesExtractors::Vector(dim + m * dim)]
+                    .get_function_values(solution, row);
+                  for (unsigned int q = 0; q < quadrature.size(); ++q)
+                    sigma[q][m] = row[q];
+                }
+              double r = 0;
+              for (unsigned int q = 0; q < quadrature.size(); ++q)
+                {
+                  const Tensor<2, dim> res =
+                    FoslsAssembler<dim>::compliance(sigma[q],
+                                                    parameters.material.mu,
+                                                    parameters.material.lambda) -
+                    Tensor<2, dim>(sym[q]);
+                  r += scalar_product(res, res) * fe_values.JxW(q);
+                }
+              indicator[cell->active_cell_index()] = std::sqrt(r);
+              for (const unsigned int v : cell->vertex_indices())
+                {
+                  const auto it = active_vertex.find(cell->vertex_index(v));
+                  if (it != active_vertex.end())
+                    status[cell->active_cell_index()] =
+                      std::max<float>(status[cell->active_cell_index()],
+                                      it->second ? 2.f : 1.f);
+                }
+            }
+        }
+        data_out.add_data_vector(indicator, "constitutive_residual",
+                                 DataOut<dim>::type_cell_data);
+        data_out.add_data_vector(status, "contact_status",
+                                 DataOut<dim>::type_cell_data);
+        data_out.build_patches(discretization.get_mapping());
+        const std::string pvtu = data_out.write_vtu_with_pvtu_record(
+          staging.string() + "/", "solution", 0, MPI_COMM_WORLD, 4);
+        files.push_back(pvtu);
+        files.push_back("solution_0000.0.vtu");
+      }
+
+    write_file(staging / "contact.csv", contact_table(x));
+    files.push_back("contact.csv");
+    write_file(staging / "convergence.csv", monitor.csv());
+    files.push_back("convergence.csv");
+    write_file(staging / "used_parameters.prm", used_parameters);
+    files.push_back("used_parameters.prm");
+    {
+      std::ostringstream json;
+      json << "{\n";
+      bool first = true;
+      for (const auto &[key, value] : summary)
+        {
+          json << (first ? "" : ",\n") << "  \"" << key << "\": " << value;
+          first = false;
+        }
+      json << "\n}\n";
+      write_file(staging / "summary.json", json.str());
+      files.push_back("summary.json");
+    }
+
+    for (const auto &name : files)
+      if (fs::exists(staging / name))
+        fs::rename(staging / name, directory / name);
+    fs::remove_all(staging);
+  }
+
+  template class Postprocessor<2>;
+  template class Postprocessor<3>;
+} // namespace FoslsContact

@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_reordering.h>
 #include <deal.II/grid/manifold_lib.h>
 
 #include <fosls_contact/scene/scene.h>
@@ -217,6 +218,20 @@ namespace FoslsContact
           },
           tria);
 
+        // RT0 needs consistently oriented lines: otherwise the normal flux
+        // of a shared face means opposite directions in the two cells, the
+        // space is not H(div)-conforming and the embedding matrices of the
+        // two parents of a child face disagree. The refined half ball is
+        // not consistently oriented, so its cells are reordered (the test
+        // tests/unit/level_transfer pins the exact embedding on this mesh).
+        {
+          auto description = GridTools::get_coarse_mesh_description(tria);
+          GridTools::consistently_order_cells(std::get<1>(description));
+          tria.clear();
+          tria.create_triangulation(std::get<0>(description),
+                                    std::get<1>(description),
+                                    SubCellData());
+        }
         // boundary ids: 0 curved, 1 flat top (by position).
         for (const auto &cell : tria.active_cell_iterators())
           for (const auto &face : cell->face_iterators())

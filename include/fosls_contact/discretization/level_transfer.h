@@ -19,8 +19,12 @@ namespace FoslsContact
    * the FESystem's embedding matrices (nodal interpolation for Q1, normal
    * flux preservation for RT0), entry by entry with `set`. We build them
    * ourselves because MGTransferPrebuilt keeps its matrices private and the
-   * monotone method needs their entries (truncation, Galerkin products);
-   * tests/unit/level_transfer checks that both prolongate identically.
+   * monotone method needs their entries (truncation, Galerkin products),
+   * and because on meshes whose cells are not aligned the RT shape
+   * functions carry sign flips that the reference embedding must be
+   * corrected for (MGTransferPrebuilt of deal.II 9.4 ignores them). The
+   * test tests/unit/level_transfer checks that a coarse function and its
+   * prolongation agree point by point.
    */
   template <int dim>
   class LevelTransfer

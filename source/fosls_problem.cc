@@ -286,7 +286,11 @@ namespace FoslsContact
           << kkt.feasibility << ", complementarity " << kkt.complementarity
           << std::defaultfloat << std::endl;
     pcout << (monitor->converged() ? "Converged" : "NOT converged") << " after "
-          << monitor->iterations() << " iterations" << std::endl;
+          << monitor->iterations() << " iterations"
+          << (monitor->stopped_at_round_off() ?
+                " (corrections at their round-off floor)" :
+                "")
+          << std::endl;
   }
 
 
@@ -311,7 +315,10 @@ namespace FoslsContact
     summary["solver"]           = std::string("\"") + solver_name(parameters.solver.type) + "\"";
     summary["iterations"]       = std::to_string(monitor->iterations());
     summary["converged"]        = monitor->converged() ? "true" : "false";
+    summary["stopped_at_round_off"] = monitor->stopped_at_round_off() ? "true" : "false";
     summary["rate_asymptotic"]  = number(monitor->asymptotic_rate());
+    summary["cycles"]           = std::to_string(monitor->cycles());
+    summary["rate_per_cycle"]   = number(monitor->rate_per_cycle());
     summary["functional"]       = number(J.total);
     summary["functional_eq"]    = number(J.eq);
     summary["functional_const"] = number(J.constitutive);

@@ -338,7 +338,7 @@ namespace FoslsContact
                         "solve (the reference). projected gauss seidel: the "
                         "classic baseline.");
       prm.declare_entry("Tolerance",
-                        "1e-10",
+                        "1e-8",
                         Patterns::Double(0),
                         "Stop when the energy norm of the last correction is "
                         "below Tolerance times that of the first correction "
@@ -385,6 +385,15 @@ namespace FoslsContact
                         "interpolated to level J (paper section 7); nested "
                         "iteration: solve on every level in turn; expression: "
                         "Data/Initial displacement.");
+      prm.declare_entry("Krylov steps",
+                        "10",
+                        Patterns::Integer(0, 100),
+                        "0: the plain monotone multigrid cycle. k > 0: truncated "
+                        "nonsmooth Newton multigrid: projected pre-smoothing on "
+                        "the finest level, then up to k conjugate gradient steps "
+                        "preconditioned by the linear truncated cycle on the "
+                        "current inactive set, a projected line search that "
+                        "never increases J, and projected post-smoothing.");
       prm.declare_entry("Definiteness check max dofs",
                         "20000",
                         Patterns::Integer(0),
@@ -424,6 +433,7 @@ namespace FoslsContact
                        g == "nested iteration" ? InitialGuess::nested_iteration :
                                                  InitialGuess::expression);
       definiteness_max_dofs = prm.get_integer("Definiteness check max dofs");
+      krylov_steps          = prm.get_integer("Krylov steps");
       prm.leave_subsection();
     }
 

@@ -139,7 +139,7 @@ namespace FoslsContact
       };
 
       Type         type                = Type::monotone_multigrid;
-      double       tolerance           = 1e-10;
+      double       tolerance           = 1e-8;
       unsigned int max_iterations      = 200;
       Stopping     stopping            = Stopping::tolerance;
       double       discretization_fraction = 0.1;
@@ -149,6 +149,7 @@ namespace FoslsContact
       Projection   projection          = Projection::b;
       InitialGuess initial_guess       = InitialGuess::coarse_solution;
       unsigned int definiteness_max_dofs = 20000;
+      unsigned int krylov_steps          = 10;
 
       static void declare_parameters(ParameterHandler &prm);
       void        parse_parameters(ParameterHandler &prm);

@@ -56,19 +56,34 @@ namespace FoslsContact
                 ExcMessage(solver_name + ": the iterate became NaN/Inf at "
                            "iteration " + std::to_string(r.iteration)));
     history.push_back(r);
+    if (history.size() == 2)
+      cycles_after_first = n_cycles;
 
     // The solution of a least-squares problem has a small energy (J(x*)
     // is the discretization error), so corrections are measured relative
     // to the first one: the criterion is an error reduction factor.
     const double first  = history.size() > 1 ? history[1].correction : 0.;
     const double norm_x = std::max(first, 1e-300);
-    // Corrections with 1/2 |d|_A^2 below the round-off of J cannot be
-    // resolved by any method that decreases J: that is convergence too.
-    const double J_terms = 0.5 * std::abs(qp.matrix.matrix_norm_square(x)) +
-                           std::abs(qp.rhs * x) + std::abs(qp.constant);
-    const double round_off =
-      std::sqrt(20. * std::numeric_limits<double>::epsilon() * J_terms);
-    bool stop = r.correction <= round_off;
+    // Round-off floor: corrections stop decreasing once they are made of
+    // the round-off of the residuals (the FOSLS matrix is the square of a
+    // first-order operator, so that floor is higher than for a Laplacian,
+    // and it grows with the level). Four iterations in a row without a new
+    // smallest correction, all below 1e-6 relative, is convergence to it.
+    bool stop = false;
+    {
+      double smallest_before = std::numeric_limits<double>::max();
+      for (unsigned int k = 1; k + 4 < history.size(); ++k)
+        smallest_before = std::min(smallest_before, history[k].correction);
+      bool stagnating = history.size() > 8;
+      for (unsigned int k = history.size() - 4; stagnating && k < history.size(); ++k)
+        stagnating = history[k].correction >= 0.5 * smallest_before &&
+                     history[k].correction <= 1e-6 * norm_x;
+      if (stagnating)
+        {
+          stop     = true;
+          at_floor = true;
+        }
+    }
     if (parameters.stopping == Parameters::Solver::Stopping::tolerance)
       stop |= r.correction <= parameters.tolerance * norm_x;
     else
@@ -92,6 +107,23 @@ namespace FoslsContact
           << std::setprecision(3) << r.rate << "  active = " << r.active
           << std::endl;
     return stop || out_of_iterations;
+  }
+
+
+  double
+  Monitor::rate_per_cycle() const
+  {
+    if (history.size() < 3 || n_cycles <= cycles_after_first ||
+        history[1].correction <= 0)
+      return 0.;
+    // stop before the round-off floor distorts the measure
+    unsigned int last = history.size() - 1;
+    if (at_floor)
+      last = std::max(2u, last - 4);
+    const double reduction = history[last].correction / history[1].correction;
+    const double per_iteration_cycles =
+      double(n_cycles - cycles_after_first) / (history.size() - 2);
+    return std::pow(reduction, 1. / (per_iteration_cycles * (last - 1)));
   }
 
 

@@ -3,6 +3,9 @@
 #include <fosls_contact/solvers/coarse_obstacles.h>
 #include <fosls_contact/solvers/monotone_multigrid.h>
 
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+
 #include <cmath>
 #include <limits>
 
@@ -17,6 +20,7 @@ namespace FoslsContact
     , parameters(parameters)
     , finest(finest_level)
     , smoother(finest_level + 1)
+    , linear_smoother(finest_level + 1)
     , galerkin_sparsity(finest_level + 1)
     , product_sparsity(finest_level + 1)
     , galerkin(finest_level + 1)
@@ -58,6 +62,22 @@ namespace FoslsContact
              e != truncated_prolongation[l].end(i);
              ++e)
           e->value() = 0;
+    // Truncation of a normal stress DoF removes its father instead of
+    // cutting the father's function: a coarse RT function stripped of the
+    // flux through some of its son faces has a large divergence there and
+    // is useless as a coarse direction, while the father's function without
+    // that face (zero flux through it, as on a Neumann face) is a proper
+    // H(div) function that leaves the son's normal stress alone.
+    std::vector<bool> removed(P.n(), false);
+    for (const auto &face : hierarchy.face_relations(l))
+      for (const auto son : face.sons)
+        if (truncated[son])
+          removed[face.coarse_dof] = true;
+    for (auto e = truncated_prolongation[l].begin();
+         e != truncated_prolongation[l].end();
+         ++e)
+      if (removed[e->column()])
+        e->value() = 0;
 
     A.mmult(product[l], truncated_prolongation[l], Vector<double>(), !built[l]);
     truncated_prolongation[l].Tmmult(galerkin[l - 1],
@@ -126,8 +146,11 @@ namespace FoslsContact
                                 const Vector<double> &      r,
                                 const Vector<double> &      ub,
                                 const std::vector<DoFRole> &role,
-                                Vector<double> &            v)
+                                Vector<double> &            v,
+                                const bool                  linear)
   {
+    PatchSmoother &smoother =
+      (linear && l == finest) ? this->linear_smoother : this->smoother;
     if (l == 0)
       {
         coarse_solve(A, r, ub, role, v);
@@ -204,6 +227,134 @@ namespace FoslsContact
   }
 
 
+  namespace
+  {
+    /** A restricted to the inactive set: truncated rows and columns are 0. */
+    struct TruncatedOperator
+    {
+      const SparseMatrix<double> &A;
+      const std::vector<DoFRole> &role;
+      void
+      vmult(Vector<double> &dst, const Vector<double> &src) const
+      {
+        Vector<double> s(src);
+        for (types::global_dof_index i = 0; i < s.size(); ++i)
+          if (role[i] == DoFRole::fixed)
+            s[i] = 0;
+        A.vmult(dst, s);
+        for (types::global_dof_index i = 0; i < s.size(); ++i)
+          if (role[i] == DoFRole::fixed)
+            dst[i] = 0;
+      }
+    };
+
+    /** The linear truncated cycle as a preconditioner. */
+    template <typename Cycle>
+    struct CyclePreconditioner
+    {
+      Cycle cycle;
+      void
+      vmult(Vector<double> &dst, const Vector<double> &src) const
+      {
+        dst = 0;
+        cycle(src, dst);
+      }
+    };
+  } // namespace
+
+
+  template <int dim>
+  unsigned int
+  MonotoneMultigrid<dim>::newton_step(const ConstrainedQP &qp, Vector<double> &x)
+  {
+    unsigned int n_cycles = 0;
+    const auto &A = qp.matrix;
+    const auto  n = x.size();
+
+    smoother.set_obstacles(finest, qp.upper_bounds);
+    smoother.set_backward(false);
+    smoother.set_steps(parameters.pre_smoothing);
+    smoother.smooth(finest, x, qp.rhs);
+
+    // the inactive set of the smoothed iterate defines the linear problem
+    linear_role = qp.role;
+    for (types::global_dof_index i = 0; i < n; ++i)
+      if (qp.role[i] == DoFRole::bounded)
+        linear_role[i] =
+          x[i] >= qp.upper_bounds[i] ? DoFRole::fixed : DoFRole::free;
+    if (linear_role != linear_role_used)
+      {
+        linear_smoother.initialize_level(finest, A, hierarchy.patches(finest), linear_role);
+        linear_role_used = linear_role;
+      }
+
+    Vector<double> residual(n), d(n);
+    A.vmult(residual, x);
+    residual.sadd(-1., 1., qp.rhs);
+    for (types::global_dof_index i = 0; i < n; ++i)
+      if (linear_role[i] == DoFRole::fixed)
+        residual[i] = 0;
+
+    const Vector<double> no_bounds(n);
+    Vector<double>       infinite(n);
+    infinite = std::numeric_limits<double>::infinity();
+    auto apply_cycle = [&](const Vector<double> &r, Vector<double> &v) {
+      cycle(finest, A, r, infinite, linear_role, v, true);
+      ++n_cycles;
+    };
+    CyclePreconditioner<decltype(apply_cycle)> preconditioner{apply_cycle};
+    TruncatedOperator                           op{A, linear_role};
+    SolverControl control(parameters.krylov_steps, 1e-3 * residual.l2_norm(), false, false);
+    SolverCG<Vector<double>> cg(control);
+    try
+      {
+        cg.solve(op, d, residual, preconditioner);
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        // a fixed number of steps: the last iterate is the direction
+      }
+
+    // Projected line search: x(alpha) = P_K(x + alpha d), accepted when J
+    // decreases; alpha starts at the minimizer along d and is halved.
+    Vector<double> Ad(n), trial(n);
+    A.vmult(Ad, d);
+    const double dAd = d * Ad, dr = d * residual;
+    if (!(dAd > 0) || !(dr > 0))
+      return n_cycles;
+    const double J0    = qp.value(x);
+    double       alpha = dr / dAd;
+    bool         accepted = false;
+    for (unsigned int k = 0; k < 12 && !accepted; ++k, alpha *= 0.5)
+      {
+        trial = x;
+        trial.add(alpha, d);
+        qp.project_to_feasible(trial);
+        if (qp.value(trial) <= J0)
+          {
+            x        = trial;
+            accepted = true;
+          }
+      }
+    if (!accepted)
+      {
+        // the feasible part of the step along d decreases J by convexity
+        double step = dr / dAd;
+        for (types::global_dof_index i = 0; i < n; ++i)
+          if (qp.role[i] == DoFRole::bounded && d[i] > 0)
+            step = std::min(step, std::max(0., (qp.upper_bounds[i] - x[i]) / d[i]));
+        x.add(step, d);
+        qp.project_to_feasible(x); // round-off only
+      }
+
+    smoother.set_obstacles(finest, qp.upper_bounds);
+    smoother.set_backward(true);
+    smoother.set_steps(parameters.post_smoothing);
+    smoother.smooth(finest, x, qp.rhs);
+    return n_cycles;
+  }
+
+
   template <int dim>
   void
   MonotoneMultigrid<dim>::solve(const ConstrainedQP &qp,
@@ -225,8 +376,14 @@ namespace FoslsContact
         const unsigned int dampings_before  = n_dampings;
         if (finest == 0)
           coarse_solve(qp.matrix, qp.rhs, qp.upper_bounds, qp.role, x);
+        else if (parameters.krylov_steps > 0)
+          // the fine-level projected smoothing counts as one more cycle
+          monitor.note_cycles(newton_step(qp, x) + 1);
         else
-          cycle(finest, qp.matrix, qp.rhs, qp.upper_bounds, qp.role, x);
+          {
+            cycle(finest, qp.matrix, qp.rhs, qp.upper_bounds, qp.role, x);
+            monitor.note_cycles(1);
+          }
         for (unsigned int k = increases_before;
              k < n_increases + smoother.energy_increases();
              ++k)

@@ -52,6 +52,15 @@ namespace FoslsContact
 
     /** A solver found J(new) > J(old) at a sub-step. */
     void note_energy_increase() { ++n_energy_increases; }
+    /** A solver applied @p n multigrid cycles (on the finest level). */
+    void note_cycles(const unsigned int n) { n_cycles += n; }
+    unsigned int cycles() const { return n_cycles; }
+    /**
+     * Mean error reduction per cycle over the run:
+     * (|dx_last|_A / |dx_1|_A)^(1 / cycles after the first iteration).
+     */
+    double rate_per_cycle() const;
+
     /** A solver had to shorten a coarse correction to stay feasible. */
     void note_feasibility_damping() { ++n_feasibility_dampings; }
 
@@ -59,6 +68,8 @@ namespace FoslsContact
     void set_converged() { has_converged = true; }
 
     unsigned int energy_increases() const { return n_energy_increases; }
+    /** Whether the run stopped at the round-off floor of the corrections. */
+    bool stopped_at_round_off() const { return at_floor; }
     unsigned int feasibility_dampings() const { return n_feasibility_dampings; }
     unsigned int iterations() const { return history.size() - 1; }
     bool         converged() const { return has_converged; }
@@ -81,7 +92,10 @@ namespace FoslsContact
     Timer                         timer;
     unsigned int                  n_energy_increases     = 0;
     unsigned int                  n_feasibility_dampings = 0;
+    unsigned int                  n_cycles               = 0;
+    unsigned int                  cycles_after_first     = 0;
     bool                          has_converged          = false;
+    bool                          at_floor               = false;
   };
 } // namespace FoslsContact
 

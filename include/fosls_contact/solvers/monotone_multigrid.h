@@ -54,13 +54,26 @@ namespace FoslsContact
                Monitor &            monitor) override;
 
   private:
-    /** One cycle on level @p l for Q_l with matrix @p A; @p v is updated. */
+    /**
+     * One cycle on level @p l for Q_l with matrix @p A; @p v is updated.
+     * With @p linear, the finest level's smoother is the one of the
+     * truncated linear problem (linear_smoother).
+     */
     void cycle(const unsigned int          l,
                const SparseMatrix<double> &A,
                const Vector<double> &      r,
                const Vector<double> &      ub,
                const std::vector<DoFRole> &role,
-               Vector<double> &            v);
+               Vector<double> &            v,
+               const bool                  linear = false);
+
+    /**
+     * One step of truncated nonsmooth Newton multigrid with conjugate
+     * gradients: projected pre-smoothing, PCG on the inactive set with the
+     * linear truncated cycle as preconditioner, projected line search,
+     * projected post-smoothing. Returns the number of cycles applied.
+     */
+    unsigned int newton_step(const ConstrainedQP &qp, Vector<double> &x);
 
     /** Exact solution of the box-constrained coarsest problem. */
     void coarse_solve(const SparseMatrix<double> &A,
@@ -79,6 +92,8 @@ namespace FoslsContact
     const unsigned int             finest;
 
     PatchSmoother                                      smoother;
+    PatchSmoother                                      linear_smoother;
+    std::vector<DoFRole>                               linear_role, linear_role_used;
     std::vector<SparsityPattern>                       galerkin_sparsity, product_sparsity;
     std::vector<SparseMatrix<double>>                  galerkin, product;
     std::vector<SparseMatrix<double>>                  truncated_prolongation;

@@ -1,5 +1,5 @@
 #include <deal.II/lac/lapack_full_matrix.h>
-#include <deal.II/lac/sparse_direct.h>
+#include <fosls_contact/qp/sparse_direct_solver.h>
 
 #include <fosls_contact/qp/definiteness_check.h>
 
@@ -26,7 +26,7 @@ namespace FoslsContact
       for (auto e = M.begin(i); e != M.end(i); ++e)
         if (qp.role[i] != DoFRole::free || qp.role[e->column()] != DoFRole::free)
           e->value() = (i == e->column()) ? 1. : 0.;
-    SparseDirectUMFPACK direct;
+    SparseDirectSolver direct;
     direct.initialize(M);
 
     const unsigned int       nc = contact.size();

@@ -1,4 +1,4 @@
-#include <deal.II/lac/sparse_direct.h>
+#include <fosls_contact/qp/sparse_direct_solver.h>
 
 #include <fosls_contact/solvers/active_set_direct.h>
 
@@ -37,7 +37,7 @@ namespace FoslsContact
       for (types::global_dof_index i = 0; i < x.size(); ++i)
         if (eliminated[i])
           rhs[i] = x[i];
-      SparseDirectUMFPACK direct;
+      SparseDirectSolver direct;
       direct.initialize(M);
       direct.vmult(x, rhs);
     }

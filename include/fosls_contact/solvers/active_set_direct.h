@@ -7,7 +7,7 @@ namespace FoslsContact
 {
   /**
    * The reference solver: a primal-dual active set method (Hintermueller,
-   * Ito, Kunisch) with a sparse direct solve (UMFPACK) of the reduced
+   * Ito, Kunisch) with a sparse direct solve (Amesos KLU) of the reduced
    * system in every step. It stops when the active set repeats, i.e. at the
    * exact discrete KKT point. The test for the active set,
    * mu_i + c_i (x_i - ub_i) > 0, uses c_i = A_ii so that it is invariant to

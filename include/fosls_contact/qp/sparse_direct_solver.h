@@ -1,0 +1,39 @@
+#ifndef fosls_contact_qp_sparse_direct_solver_h
+#define fosls_contact_qp_sparse_direct_solver_h
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+
+namespace FoslsContact
+{
+  using namespace dealii;
+
+  /**
+   * A sparse direct solver for the reference solver and the definiteness
+   * check: Trilinos Amesos with KLU. On these FOSLS matrices KLU factorizes
+   * about 8x faster than UMFPACK (measured: 25,090 DoFs 1.2 s vs 10.4 s;
+   * 99,330 DoFs 10 s), so it is the fairer reference.
+   */
+  class SparseDirectSolver
+  {
+  public:
+    SparseDirectSolver();
+    /** Factorize @p matrix. */
+    void initialize(const SparseMatrix<double> &matrix);
+    /** x = A^{-1} b with the factorization of initialize(). */
+    void vmult(Vector<double> &x, const Vector<double> &b) const;
+
+  private:
+    SolverControl                                      control;
+    std::unique_ptr<TrilinosWrappers::SparseMatrix>    matrix;
+    mutable std::unique_ptr<TrilinosWrappers::SolverDirect> solver;
+    mutable TrilinosWrappers::MPI::Vector              x_t, b_t;
+  };
+} // namespace FoslsContact
+
+#endif

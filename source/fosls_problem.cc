@@ -350,7 +350,8 @@ namespace FoslsContact
       }
     pcout << "Functional J = " << std::scientific << std::setprecision(6)
           << J.total << " (eq " << J.eq << ", const " << J.constitutive
-          << ", compl " << J.complementarity << ")" << std::endl;
+          << ", compl " << J.complementarity << ")" << std::defaultfloat
+          << std::endl;
     if (scene.has_contact())
       {
         pcout << "Contact force =";

@@ -6,7 +6,10 @@
 
 #include <fosls_contact/scene/scene.h>
 
+#include <cctype>
 #include <cmath>
+#include <iostream>
+#include <sstream>
 
 namespace FoslsContact
 {
@@ -101,6 +104,11 @@ namespace FoslsContact
     // deal.II parses lazily: initialize, then evaluate once so that a
     // malformed expression is reported here, with the parameter's name, and
     // not in the middle of the assembly.
+    // muparser reports to std::cerr before deal.II throws: silence it, the
+    // error is reported once, in one line, below.
+    std::ostringstream muted;
+    std::streambuf *   cerr_buffer = std::cerr.rdbuf(muted.rdbuf());
+    std::string        reason;
     try
       {
         function->initialize(variables, expressions, constants);
@@ -112,16 +120,27 @@ namespace FoslsContact
       }
     catch (const std::exception &e)
       {
-        std::string what = e.what();
-        const auto  pos  = what.find("The parser said:");
-        std::string reason =
-          pos == std::string::npos ? std::string("malformed expression") :
-                                     Utilities::trim(what.substr(pos + 16));
-        reason = reason.substr(0, reason.find('\n'));
-        AssertThrow(false,
-                    ExcMessage("parameter '" + name + "' = '" + expression +
-                               "' is not a valid expression: " + reason));
+        const std::string what = e.what();
+        const auto        pos  = what.find("The parser said:");
+        reason = pos == std::string::npos ? std::string("malformed expression") :
+                                            what.substr(pos + 16);
+        // deal.II wraps the text over several lines: join them
+        std::string joined;
+        for (const char c : reason)
+          if (!std::isspace(static_cast<unsigned char>(c)))
+            joined += c;
+          else if (!joined.empty() && joined.back() != ' ')
+            joined += ' ';
+        reason = Utilities::trim(joined);
+        // drop deal.II's trailing separator line
+        const auto dashes = reason.find("---");
+        if (dashes != std::string::npos)
+          reason = Utilities::trim(reason.substr(0, dashes));
       }
+    std::cerr.rdbuf(cerr_buffer);
+    AssertThrow(reason.empty(),
+                ExcMessage("parameter '" + name + "' = '" + expression +
+                           "' is not a valid expression: " + reason));
     return function;
   }
 

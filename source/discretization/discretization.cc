@@ -234,15 +234,16 @@ namespace FoslsContact
 
   template <int dim>
   void
-  Discretization<dim>::rotate_to_cartesian(const unsigned int l,
-                                           Vector<double> &   x) const
+  Discretization<dim>::apply_rotations(const unsigned int l,
+                                       Vector<double> &   x,
+                                       const bool         inverse) const
   {
+    Vector<double> in(dim), out(dim);
     for (const auto &block : levels[l].rotations)
       {
-        Vector<double> in(dim), out(dim);
         for (unsigned int k = 0; k < dim; ++k)
           in[k] = x[block.dofs[k]];
-        block.matrix.vmult(out, in);
+        (inverse ? block.inverse : block.matrix).vmult(out, in);
         for (unsigned int k = 0; k < dim; ++k)
           x[block.dofs[k]] = out[k];
       }
@@ -251,18 +252,19 @@ namespace FoslsContact
 
   template <int dim>
   void
+  Discretization<dim>::rotate_to_cartesian(const unsigned int l,
+                                           Vector<double> &   x) const
+  {
+    apply_rotations(l, x, false);
+  }
+
+
+  template <int dim>
+  void
   Discretization<dim>::rotate_to_normal_tangential(const unsigned int l,
                                                    Vector<double> &   x) const
   {
-    for (const auto &block : levels[l].rotations)
-      {
-        Vector<double> in(dim), out(dim);
-        for (unsigned int k = 0; k < dim; ++k)
-          in[k] = x[block.dofs[k]];
-        block.inverse.vmult(out, in);
-        for (unsigned int k = 0; k < dim; ++k)
-          x[block.dofs[k]] = out[k];
-      }
+    apply_rotations(l, x, true);
   }
 
 

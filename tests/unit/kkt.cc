@@ -12,6 +12,8 @@
 //    increases (Monitor::energy_increases() == 0 and a monotone history;
 //    the runs stop well before J's changes reach its round-off).
 // Functional values are printed scaled by 1e7 (they are ~1e-7).
+#include <deal.II/base/mpi.h>
+
 #include <fosls_contact/assembly/fosls_assembler.h>
 #include <fosls_contact/output/monitor.h>
 #include <fosls_contact/qp/constrained_qp.h>
@@ -184,8 +186,10 @@ solve_gauss_seidel(const unsigned int    levels,
 
 
 int
-main()
+main(int argc, char *argv[])
 {
+  // the reference solver factorizes with Trilinos (Amesos KLU): MPI first
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const Vector<double> x2 = solve_active_set(2);
   solve_active_set(4);
   // the FOSLS matrix is ill conditioned (diagonally scaled: ~3e4 on 2

@@ -5,6 +5,8 @@
 // summary.json fields error_u_h1, error_sigma_hdiv) must decrease with
 // order 1 (asserted in [0.9, 1.2] for the last two refinements); the L2
 // error of u is reported and must be at least of order 1.8.
+#include <deal.II/base/mpi.h>
+
 #include <fosls_contact/assembly/fosls_assembler.h>
 #include <fosls_contact/output/monitor.h>
 #include <fosls_contact/output/postprocessor.h>
@@ -16,8 +18,10 @@
 using namespace FoslsContactTests;
 
 int
-main()
+main(int argc, char *argv[])
 {
+  // the reference solver factorizes with Trilinos (Amesos KLU): MPI first
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::vector<ErrorNorms> errors;
   const unsigned int      first = 3, last = 6;
   for (unsigned int levels = first; levels <= last; ++levels)

@@ -131,6 +131,10 @@ namespace FoslsContact
 
   private:
     void setup_level(const unsigned int l);
+    /** x <- R x (or R^{-1} x) block by block on level @p l. */
+    void apply_rotations(const unsigned int l,
+                         Vector<double> &   x,
+                         const bool         inverse) const;
 
     const Scene<dim> &      scene;
     Triangulation<dim>      triangulation;

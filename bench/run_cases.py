@@ -19,7 +19,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BIN = os.path.join(ROOT, "build", "fosls-contact")
 RES = os.path.join(ROOT, "bench", "results")
 CASE_LIMIT_S = 300.0          # skip any single case predicted/observed above this
-SUITE_BUDGET_S = 14 * 60.0    # do not start level-9 cases beyond this suite time
+SUITE_BUDGET_S = 13 * 60.0    # do not start level-9 cases beyond this suite time
 T0 = time.time()
 
 FIELDS = ["case", "group", "scene", "config", "lambda", "level", "projection",
@@ -192,20 +192,13 @@ def main():
                         {"group": "disc2", "config": solver, "lambda": lam,
                          "level": 2, "projection": proj, "grading": g})
 
-    # c. Hertz
+    # c. Hertz (Levels = 5 took over 90 s per case on this machine; 4 takes ~35 s)
     for lam in ["1", "inf"]:
-        r = run(f"hertz_lam{lam}", "hertz.prm",
-                {"Geometry/Levels": "5", "Geometry/Grading": "2",
-                 "Material/lambda": lam, "Solver/Tolerance": "1e-8"},
-                {"group": "hertz", "config": "default", "lambda": lam, "level": 5,
-                 "grading": 2}, timeout=90)
-        if r["status"] != "ok":
-            rows.pop()
-            run(f"hertz_lam{lam}", "hertz.prm",
-                {"Geometry/Levels": "4", "Geometry/Grading": "2",
-                 "Material/lambda": lam, "Solver/Tolerance": "1e-8"},
-                {"group": "hertz", "config": "default", "lambda": lam, "level": 4,
-                 "grading": 2})
+        run(f"hertz_lam{lam}", "hertz.prm",
+            {"Geometry/Levels": "4", "Geometry/Grading": "2",
+             "Material/lambda": lam, "Solver/Tolerance": "1e-8"},
+            {"group": "hertz", "config": "default", "lambda": lam, "level": 4,
+             "grading": 2}, timeout=120)
 
     # a, d, f: the square, levels 2..8 first, level 9 at the end
     last = {}

@@ -159,10 +159,13 @@ namespace FoslsContact
         case Parameters::Solver::Type::projected_gauss_seidel:
           return std::make_unique<ProjectedGaussSeidel>();
         default:
-          return std::make_unique<MonotoneMultigrid<dim>>(*discretization,
-                                                          *transfer,
-                                                          level,
-                                                          parameters.solver);
+          {
+            auto solver = std::make_unique<MonotoneMultigrid<dim>>(
+              *discretization, *transfer, level, parameters.solver);
+            if (level == discretization->finest_level())
+              solver->set_timer(timer);
+            return solver;
+          }
       }
   }
 

@@ -53,7 +53,7 @@ namespace FoslsContact
     const Parameters::AllParameters parameters;
     const std::string               used_parameters;
     ConditionalOStream              pcout;
-    TimerOutput                     timer;
+    mutable TimerOutput             timer;
 
     Scene<dim>                           scene;
     std::unique_ptr<Discretization<dim>> discretization;

@@ -17,6 +17,37 @@ namespace FoslsContact
 
 
   double
+  BoxQP::solve(const double *g,
+               const double *s,
+               double *      c,
+               std::vector<bool> &at_bound) const
+  {
+    const unsigned int n        = matrix.m();
+    bool               feasible = true;
+    double             gc       = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        double ci = 0;
+        for (unsigned int j = 0; j < n; ++j)
+          ci += inverse(i, j) * g[j];
+        c[i] = ci;
+        gc += g[i] * ci;
+        feasible &= ci <= s[i];
+      }
+    if (feasible)
+      {
+        at_bound.assign(n, false);
+        return -0.5 * gc; // 1/2 c^T M c - g^T c with M c = g
+      }
+    Vector<double> gv(g, g + n), sv(s, s + n), cv;
+    const double   change = solve(gv, sv, cv, at_bound);
+    for (unsigned int i = 0; i < n; ++i)
+      c[i] = cv[i];
+    return change;
+  }
+
+
+  double
   BoxQP::solve(const Vector<double> &g,
                const Vector<double> &s,
                Vector<double> &      c,

@@ -41,6 +41,7 @@ namespace FoslsContact
   {
     if (built[l] && truncated == truncation_used[l] && version[l] == version_used[l])
       return;
+    const auto timing = section("Solve: Galerkin operators and patch setup");
 
     const SparseMatrix<double> &P = hierarchy.prolongation(l);
     if (!built[l])
@@ -104,6 +105,7 @@ namespace FoslsContact
                                        const std::vector<DoFRole> &role,
                                        Vector<double> &            v)
   {
+    const auto timing = section("Solve: coarse solve");
     std::vector<types::global_dof_index> dofs;
     for (types::global_dof_index i = 0; i < v.size(); ++i)
       if (role[i] != DoFRole::fixed && A.diag_element(i) > 0)
@@ -160,7 +162,10 @@ namespace FoslsContact
     smoother.set_obstacles(l, ub);
     smoother.set_backward(false);
     smoother.set_steps(parameters.pre_smoothing);
-    smoother.smooth(l, v, r);
+    {
+      const auto timing = section("Solve: smoothing");
+      smoother.smooth(l, v, r);
+    }
 
     const double       inf     = std::numeric_limits<double>::infinity();
     const auto &       coarse_role = hierarchy.level(l - 1).role;
@@ -223,7 +228,10 @@ namespace FoslsContact
     smoother.set_obstacles(l, ub);
     smoother.set_backward(true);
     smoother.set_steps(parameters.post_smoothing);
-    smoother.smooth(l, v, r);
+    {
+      const auto timing = section("Solve: smoothing");
+      smoother.smooth(l, v, r);
+    }
   }
 
 

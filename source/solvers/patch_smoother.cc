@@ -60,8 +60,8 @@ namespace FoslsContact
     const auto & A     = *level.matrix;
     const auto & ub    = *level.obstacles;
     const double inf   = std::numeric_limits<double>::infinity();
-    Vector<double>    g, s, c;
-    std::vector<bool> at_bound;
+    std::vector<double> g, s, c;
+    std::vector<bool>   at_bound;
 
     const unsigned int n_patches = level.patches.size();
     for (unsigned int step = 0; step < steps; ++step)
@@ -69,8 +69,9 @@ namespace FoslsContact
         {
           const Patch &      patch = level.patches[backward ? n_patches - 1 - k : k];
           const unsigned int n     = patch.dofs.size();
-          g.reinit(n, true);
-          s.reinit(n, true);
+          g.resize(n);
+          s.resize(n);
+          c.resize(n);
           double scale = 0;
           for (unsigned int a = 0; a < n; ++a)
             {
@@ -81,7 +82,7 @@ namespace FoslsContact
               g[a] = gi;
               s[a] = patch.bounded[a] ? std::max(0., ub[i] - v[i]) : inf;
             }
-          const double change = patch.qp.solve(g, s, c, at_bound);
+          const double change = patch.qp.solve(g.data(), s.data(), c.data(), at_bound);
           for (unsigned int a = 0; a < n; ++a)
             {
               const auto i = patch.dofs[a];

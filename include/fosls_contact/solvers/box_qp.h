@@ -43,6 +43,15 @@ namespace FoslsContact
                  Vector<double> &         c,
                  std::vector<bool> &      at_bound) const;
 
+    /**
+     * The same on raw arrays of size(), without allocations when no bound
+     * is reached (the hot path of the smoother).
+     */
+    double solve(const double *       g,
+                 const double *       s,
+                 double *             c,
+                 std::vector<bool> &  at_bound) const;
+
   private:
     FullMatrix<double> matrix;
     FullMatrix<double> inverse;

@@ -1,6 +1,7 @@
 #ifndef fosls_contact_solvers_monotone_multigrid_h
 #define fosls_contact_solvers_monotone_multigrid_h
 
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
@@ -53,7 +54,16 @@ namespace FoslsContact
                Vector<double> &     x,
                Monitor &            monitor) override;
 
+    /** Time smoothing, Galerkin operators and coarse solves in @p timer. */
+    void set_timer(TimerOutput &timer) { this->timer = &timer; }
+
   private:
+    /** A scoped section of the timer, if there is one. */
+    std::unique_ptr<TimerOutput::Scope> section(const char *name) const
+    {
+      return timer ? std::make_unique<TimerOutput::Scope>(*timer, name) : nullptr;
+    }
+
     /**
      * One cycle on level @p l for Q_l with matrix @p A; @p v is updated.
      * With @p linear, the finest level's smoother is the one of the
@@ -100,7 +110,7 @@ namespace FoslsContact
     std::vector<std::vector<bool>>                     truncation_used;
     std::vector<unsigned int>                          version, version_used;
     std::vector<bool>                                  built;
-    Monitor *                                          monitor = nullptr;
+    TimerOutput *                                      timer   = nullptr;
     unsigned int                                       n_increases = 0;
     unsigned int                                       n_dampings  = 0;
   };

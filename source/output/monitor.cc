@@ -84,6 +84,9 @@ namespace FoslsContact
           at_floor = true;
         }
     }
+    // an exact fixed point (e.g. a one-level run started from its own
+    // coarse solution) has nothing left to reduce
+    stop |= r.correction == 0. || first == 0.;
     if (parameters.stopping == Parameters::Solver::Stopping::tolerance)
       stop |= r.correction <= parameters.tolerance * norm_x;
     else

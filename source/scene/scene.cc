@@ -263,6 +263,19 @@ namespace FoslsContact
                 face->set_manifold_id(top ? numbers::flat_manifold_id : 0);
               }
         tria.set_manifold(0, SphericalManifold<dim>(center));
+        for (const auto &cell : tria.active_cell_iterators())
+          AssertThrow(GridTools::cell_measure(
+                        tria.get_vertices(),
+                        [&]() {
+                          std::vector<unsigned int> v;
+                          for (const unsigned int i : cell->vertex_indices())
+                            v.push_back(cell->vertex_index(i));
+                          return v;
+                        }()) > 1e-12 * radius * radius,
+                      ExcMessage("parameter 'Geometry/Grading' = " +
+                                 std::to_string(gamma) +
+                                 " distorts the half disc mesh into inverted "
+                                 "cells; use a smaller grading"));
       }
 
     // Every boundary id of the mesh needs exactly one condition, and every

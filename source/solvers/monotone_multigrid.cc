@@ -383,7 +383,13 @@ namespace FoslsContact
         const unsigned int increases_before = n_increases + smoother.energy_increases();
         const unsigned int dampings_before  = n_dampings;
         if (finest == 0)
-          coarse_solve(qp.matrix, qp.rhs, qp.upper_bounds, qp.role, x);
+          {
+            // one level: the exact coarse solve is the whole method
+            coarse_solve(qp.matrix, qp.rhs, qp.upper_bounds, qp.role, x);
+            monitor.report(x, x_old);
+            monitor.set_converged();
+            break;
+          }
         else if (parameters.krylov_steps > 0)
           // the fine-level projected smoothing counts as one more cycle
           monitor.note_cycles(newton_step(qp, x) + 1);

@@ -1,10 +1,11 @@
 #!/bin/bash
 # The one test driver of tests/CMakeLists.txt. Three modes:
 #
-#   run_and_compare.sh unit  WORKDIR EXPECTED REL ABS -- EXE
+#   run_and_compare.sh unit  WORKDIR EXPECTED REL ABS -- EXE [ARGS...]
 #       Runs a unit test executable in a fresh WORKDIR; it must exit with 0,
 #       and its standard output must match EXPECTED (numdiff, relative
-#       tolerance REL, absolute tolerance ABS).
+#       tolerance REL, absolute tolerance ABS). The solver tests use this
+#       mode with EXE = python3 tests/solver/<name>.py FOSLS_CONTACT SRC.
 #
 #   run_and_compare.sh scene WORKDIR EXPECTED REL ABS FILTER -- EXE PRM [ARGS...]
 #       Runs `EXE PRM --set Output/Directory=out ARGS...` in a fresh WORKDIR;

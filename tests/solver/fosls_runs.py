@@ -1,0 +1,228 @@
+"""Helpers for the solver tests in tests/solver: python3 scripts that run
+fosls-contact several times (with --set) and compare the runs with each
+other, with the active set solver (the reference) or with formulas.
+
+Every script is called as
+
+    python3 tests/solver/<name>.py FOSLS_CONTACT_EXECUTABLE SOURCE_DIR
+
+by tests/run_and_compare.sh (mode "unit") in a fresh work directory. It
+prints deterministic text only (iteration counts, active-set sizes, numbers
+rounded to a few digits, one "what: ok" / "what: FAILED" line per
+assertion; never times), which the driver compares with
+tests/solver/<name>.output, and exits with 1 if an assertion failed, so a
+test fails even if its .output file was regenerated carelessly. Each run
+leaves run_NN_<name>.cmd (the command line), .screen, .stderr and its
+output directory in the work directory, for inspection.
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+
+_failures = [0]
+
+
+def check(condition, what):
+    """Print 'what: ok' or 'what: FAILED' and count failures."""
+    print("%s: %s" % (what, "ok" if condition else "FAILED"))
+    sys.stdout.flush()
+    if not condition:
+        _failures[0] += 1
+    return condition
+
+
+def finish():
+    """Exit with 1 if a check failed."""
+    if _failures[0]:
+        print("%d check(s) FAILED" % _failures[0])
+    sys.stdout.flush()
+    sys.exit(1 if _failures[0] else 0)
+
+
+def rounded(value, digits=6):
+    """@p value with @p digits significant digits, as text ('null' if None)."""
+    if value is None:
+        return "null"
+    text = "%.*g" % (digits, value)
+    return "0" if text in ("0", "-0") else text
+
+
+def relative_difference(a, b):
+    """|a - b| / max(|a|, |b|) for numbers or vectors (Euclidean norms);
+    0 if both are 0, inf if one is missing."""
+    if a is None or b is None:
+        return math.inf
+    if isinstance(a, (list, tuple)):
+        num = math.sqrt(sum((x - y) ** 2 for x, y in zip(a, b)))
+        den = max(math.sqrt(sum(x * x for x in a)),
+                  math.sqrt(sum(y * y for y in b)))
+    else:
+        num, den = abs(a - b), max(abs(a), abs(b))
+    return 0. if num == 0 else num / den
+
+
+class Run:
+    """One finished run: summary.json, convergence.csv, screen, stderr and
+    exit code."""
+
+    def __init__(self, name, returncode, screen, stderr, directory):
+        self.name = name
+        self.returncode = returncode
+        self.screen = screen
+        self.stderr = stderr
+        self.directory = directory
+        self.summary = {}
+        self.history = []
+        try:
+            with open(os.path.join(directory, "summary.json")) as f:
+                self.summary = json.load(f)
+        except (OSError, ValueError):
+            pass
+        try:
+            with open(os.path.join(directory, "convergence.csv")) as f:
+                lines = f.read().splitlines()
+            keys = lines[0].split(",")
+            self.history = [dict(zip(keys, (float(v) for v in l.split(","))))
+                            for l in lines[1:] if l]
+        except (OSError, ValueError, IndexError):
+            pass
+
+    def __getitem__(self, key):
+        return self.summary.get(key)
+
+    def ok(self):
+        """Exit code 0, nothing on stderr, summary.json written."""
+        return (self.returncode == 0 and self.stderr == ""
+                and bool(self.summary))
+
+    @property
+    def force(self):
+        """The Euclidean norm of the contact force (None if missing)."""
+        f = self.summary.get("contact_force")
+        if f is None or any(c is None for c in f):
+            return None
+        return math.sqrt(sum(c * c for c in f))
+
+    def finite(self):
+        """No NaN/Inf anywhere: summary.json writes a non-finite number as
+        null, and every number of convergence.csv must be finite."""
+        keys = ["functional", "functional_eq", "functional_const",
+                "functional_compl", "kkt_residual", "max_violation"]
+        values = [self.summary.get(k) for k in keys]
+        values += list(self.summary.get("contact_force") or [None])
+        values += [v for r in self.history for v in r.values()]
+        return (bool(self.summary) and bool(self.history)
+                and all(v is not None and math.isfinite(v) for v in values))
+
+    def max_increase(self):
+        """The largest increase J_k - J_{k-1} in convergence.csv, relative
+        to J_0 (0 if J never increases)."""
+        J = [r["functional"] for r in self.history]
+        if len(J) < 2:
+            return 0.
+        return max(0., max(J[k] - J[k - 1] for k in range(1, len(J)))) \
+            / max(abs(J[0]), 1e-300)
+
+    def max_violation_history(self):
+        """The largest constraint violation of any iterate (convergence.csv)
+        and of the result (summary.json)."""
+        values = [r["violation"] for r in self.history]
+        values.append(self.summary.get("max_violation", math.inf))
+        return max(v if v is not None else math.inf for v in values)
+
+
+class Runner:
+    """Runs the executable on scenes of the source tree with --set."""
+
+    def __init__(self, argv):
+        if len(argv) != 3:
+            sys.exit("usage: %s FOSLS_CONTACT SOURCE_DIR" % argv[0])
+        self.exe, self.source = argv[1], argv[2]
+        self.count = 0
+
+    def run(self, prm, settings=(), name=None):
+        """Run @p prm (relative to the source directory) with the
+        "Section/Name=value" strings @p settings; the output goes to
+        ./run_NN_<name>, without vtu files."""
+        self.count += 1
+        directory = "run_%02d" % self.count + ("_" + name if name else "")
+        command = [self.exe, os.path.join(self.source, prm),
+                   "--set", "Output/Directory=" + directory,
+                   "--set", "Output/Write vtu=false"]
+        for s in settings:
+            command += ["--set", s]
+        with open(directory + ".cmd", "w") as f:
+            f.write(" ".join("'%s'" % c if " " in c or ";" in c else c
+                             for c in command) + "\n")
+        with open(directory + ".screen", "w") as out, \
+                open(directory + ".stderr", "w") as err:
+            returncode = subprocess.call(command, stdout=out, stderr=err)
+        with open(directory + ".screen") as f:
+            screen = f.read()
+        with open(directory + ".stderr") as f:
+            stderr = f.read()
+        return Run(name or directory, returncode, screen, stderr, directory)
+
+
+# Tolerances shared by the scripts.
+#
+# J is evaluated as 1/2 x^T A x - b^T x + c, whose terms are far larger than
+# J at the solution (J is the squared discretization error): on the square
+# at 6 levels consecutive iterates at the round-off floor show J going up by
+# up to 3.3e-10 J_0 (1.2e-15 absolute). "J never increases" is therefore
+# checked on convergence.csv up to MONOTONE_TOLERANCE * J_0, and exactly by
+# the solver's own count (summary.json energy_increases, which compares the
+# change of each sub-step with the round-off of its own terms).
+MONOTONE_TOLERANCE = 1e-8
+# Feasibility: every bound and fixed value holds to 1e-12 relative to the
+# data scale of the scenes (the push 0.01 of the top side), i.e. 1e-14
+# absolute. The solvers project exactly, so the measured value is 0.
+VIOLATION_TOLERANCE = 1e-14
+
+
+def check_monotone_feasible(run, label, scale=0.01,
+                            monotone_tolerance=MONOTONE_TOLERANCE):
+    """The common checks of every multigrid run: it ran (exit code 0,
+    nothing on stderr), no NaN/Inf, J never increased (solver count, and
+    convergence.csv up to @p monotone_tolerance J_0), every iterate is
+    feasible (violations up to 1e-12 @p scale)."""
+    check(run.ok(), label + ": exit code 0, nothing on stderr")
+    check(run.finite(), label + ": no NaN/Inf in summary.json and "
+          "convergence.csv")
+    check(run["energy_increases"] == 0, label + ": energy_increases == 0")
+    check(run.max_increase() <= monotone_tolerance,
+          label + ": J_k <= J_{k-1} + %g J_0 in convergence.csv"
+          % monotone_tolerance)
+    check(run.max_violation_history() <= VIOLATION_TOLERANCE * scale / 0.01,
+          label + ": every iterate feasible (violation <= %g)"
+          % (VIOLATION_TOLERANCE * scale / 0.01))
+
+
+def describe(run, label, keys=("iterations", "cycles", "converged",
+                               "active", "feasibility_dampings")):
+    """One deterministic line: the integer/boolean fields @p keys."""
+    print("%s: %s" % (label, ", ".join(
+        "%s %s" % (k, json.dumps(run[k])) for k in keys)))
+
+
+def compare_with_reference(run, reference, label, force_tolerance=1e-8,
+                           functional_tolerance=1e-8, kkt_tolerance=1e-8):
+    """The run reached the reference's KKT point: relative differences of
+    the contact force vector and of J, the KKT residual, same number of
+    active constraints."""
+    check(reference.ok() and reference["converged"] is True,
+          label + ": the reference (active set) converged")
+    dF = relative_difference(run["contact_force"], reference["contact_force"])
+    dJ = relative_difference(run["functional"], reference["functional"])
+    check(dF <= force_tolerance,
+          label + ": |F - F_ref| / |F_ref| <= %g" % force_tolerance)
+    check(dJ <= functional_tolerance,
+          label + ": |J - J_ref| / J_ref <= %g" % functional_tolerance)
+    check(run["kkt_residual"] is not None
+          and run["kkt_residual"] <= kkt_tolerance,
+          label + ": KKT residual <= %g" % kkt_tolerance)
+    check(run["active"] == reference["active"],
+          label + ": active constraints as the reference (%s)"
+          % reference["active"])

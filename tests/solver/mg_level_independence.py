@@ -1,0 +1,46 @@
+#!/usr/bin/env python3
+# Monotone multigrid (issue "Monotone multilevel solver", item 10.3): the
+# iteration count of the default solver (Krylov steps = 10, W(3,3),
+# projection b, coarse-solution start, tolerance 1e-8) does not grow with
+# the level: the square (prm/square.prm) with lambda = 1 and lambda = inf on
+# levels 3, 4, 5, 6 (130 to 6402 DoFs). Prints iterations and cycles per
+# level and asserts max - min <= 2 iterations and at most 6 iterations
+# per level; every run converged to a KKT residual < 1e-10 with
+# energy_increases == 0 and feasible iterates.
+# Measured (Nov 2026): lambda = 1: 5, 3, 3, 4 iterations (19, 13, 12, 16
+# cycles); lambda = inf: 4, 3, 3, 3 iterations (16, 12, 12, 12 cycles);
+# level 7: 4 and 3 iterations. So max - min is 2 for lambda = 1 (no margin
+# left: the bound is the issue's; level 3, with only 2 levels below it, is
+# the outlier) and 1 for lambda = inf. The square's contact set is found
+# by the coarse start, so the problem is linear after the first smoothing
+# (paper section 7).
+import sys
+import os
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from fosls_runs import Runner, check, check_monotone_feasible, finish, \
+    rounded
+
+R = Runner(sys.argv)
+for lam in ["1", "inf"]:
+    print("=== lambda = " + lam)
+    iterations = []
+    for levels in [3, 4, 5, 6]:
+        run = R.run("prm/square.prm", ["Geometry/Levels=%d" % levels,
+                                       "Material/lambda=" + lam],
+                    "lambda_%s_level_%d" % (lam, levels))
+        print("level %d: dofs %s, iterations %s, cycles %s, active %s, "
+              "contact force %s"
+              % (levels, run["dofs"], run["iterations"], run["cycles"],
+                 run["active"], rounded(run.force)))
+        label = "level %d" % levels
+        check(run["converged"] is True and run["kkt_residual"] is not None
+              and run["kkt_residual"] < 1e-10,
+              label + ": converged, KKT residual < 1e-10")
+        check_monotone_feasible(run, label)
+        iterations.append(run["iterations"] or 1000)
+    print("iterations over levels 3..6: min %d, max %d"
+          % (min(iterations), max(iterations)))
+    check(max(iterations) - min(iterations) <= 2,
+          "max - min iterations <= 2")
+    check(max(iterations) <= 6, "at most 6 iterations on every level")
+finish()

@@ -1,0 +1,52 @@
+#!/usr/bin/env python3
+# Monotone multigrid (issue "Monotone multilevel solver", item 10.2): the
+# multigrid result is the KKT point of the active set (reference) solver,
+# for each coarse obstacle projection a, b, c, d (Solver/Projection), on
+# the square (prm/square.prm, 3 and 4 levels) and on the half disc
+# (prm/hertz.prm, 2 levels): relative difference of the contact force
+# vector and of J below 1e-8, KKT residual below 1e-8, the same number of
+# active constraints. Default solver (Krylov steps = 10) for all; the plain
+# cycle (Krylov steps = 0) only on the square (measured: 11 iterations at 4
+# levels for each projection; on the half disc it does not converge, see
+# known problem bug_plain_cycle_hertz).
+# Solver/Tolerance = 1e-10: the stopping criterion is a relative energy
+# correction, and with the default 1e-8 the force on the half disc agreed
+# only to 5.8e-9; with 1e-10 measured: force <= 6e-11, J <= 3e-10, KKT
+# residual <= 3e-16).
+# Measured on this scene set: a, b, c, d give identical iterates (the
+# coarse-solution start finds the whole contact set at once, so the coarse
+# obstacles of the truncated hierarchy are +inf); the zero-start runs of
+# mg_monotone_feasible exercise them.
+import sys
+import os
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from fosls_runs import Runner, check, check_monotone_feasible, \
+    compare_with_reference, describe, finish, rounded
+
+R = Runner(sys.argv)
+tolerance = ["Solver/Tolerance=1e-10"]
+for scene, prm, levels, plain in [("square", "prm/square.prm", 3, True),
+                                  ("square", "prm/square.prm", 4, True),
+                                  ("hertz", "prm/hertz.prm", 2, False)]:
+    settings = ["Geometry/Levels=%d" % levels]
+    print("=== %s, %d levels" % (scene, levels))
+    reference = R.run(prm, settings + ["Solver/Type=active set"],
+                      "%s%d_active_set" % (scene, levels))
+    describe(reference, "active set", ("dofs", "iterations", "converged",
+                                       "active"))
+    print("active set: contact force |F| = %s, J = %s"
+          % (rounded(reference.force), rounded(reference["functional"])))
+    for projection in "abcd":
+        krylov = ["10", "0"] if plain else ["10"]
+        for k in krylov:
+            label = "projection %s, %s" % (
+                projection, "default" if k == "10" else "plain cycle")
+            run = R.run(prm, settings + tolerance
+                        + ["Solver/Projection=" + projection,
+                           "Solver/Krylov steps=" + k],
+                        "%s%d_%s_%s" % (scene, levels, projection, k))
+            describe(run, label)
+            check(run["converged"] is True, label + ": converged")
+            check_monotone_feasible(run, label)
+            compare_with_reference(run, reference, label)
+finish()

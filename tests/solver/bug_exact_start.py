@@ -21,6 +21,7 @@
 # iteration start converge within 10 iterations with force 0.
 import sys
 import os
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fosls_runs import Runner, check, finish
 

@@ -31,6 +31,7 @@
 # half disc alone takes about 4 minutes.
 import sys
 import os
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fosls_runs import Runner, check, finish, relative_difference
 

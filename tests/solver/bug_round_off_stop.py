@@ -24,6 +24,7 @@
 # solver to 1e-7 relative (tolerance 1e-8 resp. 1e-10).
 import sys
 import os
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fosls_runs import Runner, check, finish, relative_difference
 

@@ -24,6 +24,7 @@
 # DoF box it costs more than the solve).
 import sys
 import os
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fosls_runs import Runner, check, check_monotone_feasible, \
     compare_with_reference, describe, finish, rounded

@@ -31,6 +31,7 @@
 # 7.9e-9 and 9e-8 off, at 1e-10 1.1e-8).
 import sys
 import os
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fosls_runs import Runner, check, check_monotone_feasible, \
     compare_with_reference, describe, finish, rounded

@@ -16,6 +16,7 @@
 # (paper section 7).
 import sys
 import os
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fosls_runs import Runner, check, check_monotone_feasible, finish, \
     rounded

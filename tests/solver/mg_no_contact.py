@@ -15,6 +15,7 @@
 # 2.4e-7 at 6 levels while J, the H1 and H(div) errors agreed to 4e-10.
 import sys
 import os
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fosls_runs import Runner, check, check_monotone_feasible, describe, \
     finish, relative_difference, rounded

@@ -339,6 +339,17 @@ namespace FoslsContact
     summary["time_setup_s"]          = number(time_setup);
     summary["time_solve_s"]          = number(time_solve);
     summary["peak_rss_mb"]           = number(memory.VmHWM / 1024.);
+    {
+      // wall seconds of every TimerOutput section finished so far (the
+      // output section itself is still running)
+      std::string sections = "{";
+      for (const auto &[name, seconds] :
+           timer.get_summary_data(TimerOutput::total_wall_time))
+        if (name != "Output")
+          sections += std::string(sections.size() > 1 ? ", " : "") + "\"" +
+                      name + "\": " + number(seconds);
+      summary["time_sections_s"] = sections + "}";
+    }
     if (scene.has_exact_solution())
       {
         const ErrorNorms e = post.errors(cartesian);

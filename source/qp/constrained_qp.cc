@@ -1,6 +1,7 @@
 #include <fosls_contact/qp/constrained_qp.h>
 
 #include <cmath>
+#include <limits>
 
 namespace FoslsContact
 {
@@ -136,5 +137,21 @@ namespace FoslsContact
   ConstrainedQP::energy_norm(const Vector<double> &d) const
   {
     return std::sqrt(std::max(0., matrix.matrix_norm_square(d)));
+  }
+
+
+  double
+  ConstrainedQP::round_off_correction(const Vector<double> &x) const
+  {
+    double sum = 0;
+    for (types::global_dof_index i = 0; i < x.size(); ++i)
+      if (role[i] != DoFRole::fixed && matrix.diag_element(i) > 0)
+        {
+          double s = std::abs(rhs[i]);
+          for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
+            s += std::abs(e->value() * x[e->column()]);
+          sum += s * s / matrix.diag_element(i);
+        }
+    return std::numeric_limits<double>::epsilon() * std::sqrt(sum);
   }
 } // namespace FoslsContact

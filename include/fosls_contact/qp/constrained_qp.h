@@ -77,6 +77,16 @@ namespace FoslsContact
      * where A is positive definite).
      */
     double energy_norm(const Vector<double> &d) const;
+    /**
+     * The energy norm of the correction that the round-off of the residual
+     * b - A x alone would cause: with s_i = |b_i| + sum_j |A_ij x_j| the
+     * size of the terms of row i, the residual is known only to about
+     * eps s_i, and a (block) relaxation turns that into a correction of
+     * energy norm about eps sqrt(sum_i s_i^2 / A_ii). Corrections of this
+     * size carry no information about the error: the stopping rule does not
+     * ask for smaller ones.
+     */
+    double round_off_correction(const Vector<double> &x) const;
 
   };
 } // namespace FoslsContact

@@ -386,11 +386,12 @@ namespace FoslsContact
                         "iteration: solve on every level in turn; expression: "
                         "Data/Initial displacement.");
       prm.declare_entry("Krylov steps",
-                        "10",
-                        Patterns::Integer(0, 100),
+                        "50",
+                        Patterns::Integer(0, 1000),
                         "0: the plain monotone multigrid cycle. k > 0: truncated "
                         "nonsmooth Newton multigrid: projected pre-smoothing on "
-                        "the finest level, then up to k conjugate gradient steps "
+                        "the finest level, then conjugate gradient steps (at most k; "
+                        "they stop at a residual reduction of 1e-3) "
                         "preconditioned by the linear truncated cycle on the "
                         "current inactive set, a projected line search that "
                         "never increases J, and projected post-smoothing.");

@@ -64,29 +64,31 @@ namespace FoslsContact
     // to the first one: the criterion is an error reduction factor.
     const double first  = history.size() > 1 ? history[1].correction : 0.;
     const double norm_x = std::max(first, 1e-300);
-    // Round-off floor: corrections stop decreasing once they are made of
-    // the round-off of the residuals (the FOSLS matrix is the square of a
-    // first-order operator, so that floor is higher than for a Laplacian,
-    // and it grows with the level). Four iterations in a row without a new
-    // smallest correction, all below 1e-6 relative, is convergence to it.
-    bool stop = false;
-    {
-      double smallest_before = std::numeric_limits<double>::max();
-      for (unsigned int k = 1; k + 4 < history.size(); ++k)
-        smallest_before = std::min(smallest_before, history[k].correction);
-      bool stagnating = history.size() > 8;
-      for (unsigned int k = history.size() - 4; stagnating && k < history.size(); ++k)
-        stagnating = history[k].correction >= 0.5 * smallest_before &&
-                     history[k].correction <= 1e-6 * norm_x;
-      if (stagnating)
-        {
-          stop     = true;
-          at_floor = true;
-        }
-    }
-    // an exact fixed point (e.g. a one-level run started from its own
-    // coarse solution) has nothing left to reduce
-    stop |= r.correction == 0. || first == 0.;
+    // Round-off floor: a correction within a factor 10 of the round-off
+    // level of the corrections at x (ConstrainedQP::round_off_correction)
+    // carries no information about the error, whatever the tolerance asks
+    // for. This also ends a run whose start is already exact (its first
+    // correction is round-off).
+    const double floor = qp.round_off_correction(x);
+    history.back().round_off = floor;
+    bool         stop  = r.correction <= 10. * floor;
+    // Should the estimate be low for some mesh, the corrections stagnate
+    // above it: four iterations in a row without a new smallest correction,
+    // all within 1000 times the estimate, is the floor as well. (Far above
+    // the estimate a slow steady decrease must not be taken for it.)
+    if (!stop && history.size() > 8)
+      {
+        double smallest_before = std::numeric_limits<double>::max();
+        for (unsigned int k = 1; k + 4 < history.size(); ++k)
+          smallest_before = std::min(smallest_before, history[k].correction);
+        bool stagnating = true;
+        for (unsigned int k = history.size() - 4; stagnating && k < history.size(); ++k)
+          stagnating = history[k].correction >= 0.5 * smallest_before &&
+                       history[k].correction <= 1000. * floor;
+        stop            = stagnating;
+        floor_stagnated = stagnating;
+      }
+    at_floor = stop;
     if (parameters.stopping == Parameters::Solver::Stopping::tolerance)
       stop |= r.correction <= parameters.tolerance * norm_x;
     else
@@ -121,7 +123,9 @@ namespace FoslsContact
       return 0.;
     // stop before the round-off floor distorts the measure
     unsigned int last = history.size() - 1;
-    if (at_floor)
+    while (last > 2 && history[last].correction <= 10. * history[last].round_off)
+      --last;
+    if (floor_stagnated)
       last = std::max(2u, last - 4);
     const double reduction = history[last].correction / history[1].correction;
     const double per_iteration_cycles =

@@ -17,6 +17,7 @@ namespace FoslsContact
     rhs_compl.reinit(level.n_dofs);
     constant = constant_eq = 0;
     role         = level.role;
+    dimension    = dim;
     fixed_values = level.fixed_values;
     upper_bounds = level.upper_bounds;
   }
@@ -152,6 +153,7 @@ namespace FoslsContact
             s += std::abs(e->value() * x[e->column()]);
           sum += s * s / matrix.diag_element(i);
         }
-    return std::numeric_limits<double>::epsilon() * std::sqrt(sum);
+    return std::numeric_limits<double>::epsilon() * std::sqrt(sum) *
+           std::pow(double(x.size()), 1. / dimension);
   }
 } // namespace FoslsContact

@@ -284,21 +284,25 @@ namespace FoslsContact
     smoother.set_steps(parameters.pre_smoothing);
     smoother.smooth(finest, x, qp.rhs);
 
-    // the inactive set of the smoothed iterate defines the linear problem
+    // The linear problem keeps a DoF at its bound only where the bound
+    // holds it: the multiplier mu_i = (b - A x)_i is positive. A DoF that
+    // sits at its bound while the gradient pulls it inside (mu_i < 0) is
+    // left free, so that the Newton direction can release it; the
+    // projected line search keeps the step feasible.
+    Vector<double> residual(n), d(n);
+    A.vmult(residual, x);
+    residual.sadd(-1., 1., qp.rhs);
     linear_role = qp.role;
     for (types::global_dof_index i = 0; i < n; ++i)
       if (qp.role[i] == DoFRole::bounded)
-        linear_role[i] =
-          x[i] >= qp.upper_bounds[i] ? DoFRole::fixed : DoFRole::free;
+        linear_role[i] = (x[i] >= qp.upper_bounds[i] && residual[i] >= 0) ?
+                           DoFRole::fixed :
+                           DoFRole::free;
     if (linear_role != linear_role_used)
       {
         linear_smoother.initialize_level(finest, A, hierarchy.patches(finest), linear_role);
         linear_role_used = linear_role;
       }
-
-    Vector<double> residual(n), d(n);
-    A.vmult(residual, x);
-    residual.sadd(-1., 1., qp.rhs);
     for (types::global_dof_index i = 0; i < n; ++i)
       if (linear_role[i] == DoFRole::fixed)
         residual[i] = 0;

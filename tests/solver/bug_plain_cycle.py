@@ -15,7 +15,7 @@
 #  - the square (4 levels) from a zero start: after 300 cycles J = 7.9e-5
 #    vs J* = 2.5e-7 and the force 0.00275 vs 0.0270 (rate 0.97; from the
 #    coarse start: 14 cycles).
-# The default solver (Krylov steps = 10) converges in all three.
+# The default solver (Krylov steps = 50) converges in all three.
 # Reproduction: fosls-contact prm/hertz.prm --set "Solver/Krylov steps=0"
 #   --set "Solver/Max iterations=300"
 # Checks: the plain cycle converges within 100 cycles to the active set

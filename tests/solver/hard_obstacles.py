@@ -6,9 +6,9 @@
 #  - initial gap 0.005 (Data/Gap = 0.005): contact, with about half the
 #    force of gap 0 (the body is compressed by 0.005 instead of 0.01);
 #  - initial gap 0.02 > 0.01: no contact at all; the contact force must be
-#    exactly 0 and no contact vertex active (zero start: from the default
-#    coarse-solution start, which is already exact, the run does not stop,
-#    known problem, test bug_exact_start);
+#    exactly 0 and no contact vertex active (zero start; the default
+#    coarse-solution start, which is already exact, is test
+#    mg_exact_start);
 #  - a penetrating start (Solver/Initial guess = expression, Data/Initial
 #    displacement = "0; -0.05"): the note "Initial guess violates the
 #    contact constraints by 5.000e-02: projected onto the feasible set" is
@@ -18,11 +18,9 @@
 #  - curved obstacles: Gap = 0.02 (x - 0.5)^2 (contact where the parabola
 #    is below the push), and a Hertz-like cylinder of radius R = 0.5 below
 #    the square, Gap = R - sqrt(R^2 - (x - 0.5)^2) (contact in the middle
-#    only). With R = 1 or 2 the default solver stagnates at 5 levels (rate
-#    0.97-0.99 per cycle; known problem, test bug_partial_contact).
-# Checks per run: converged within 20 iterations (measured 3-5 for the
-# flat, tilted and penetrating cases, 11 and 16 for the curved ones, whose
-# rate per cycle is 0.7-0.8), no NaN/Inf, energy_increases == 0, every
+#    only; R = 1 on 5 levels and the half disc on 4 levels are test
+#    hard_partial_contact).
+# Checks per run: converged within 20 iterations (measured 4-5), no NaN/Inf, energy_increases == 0, every
 # iterate feasible, and the reference's KKT point: force and J to 1e-8
 # relative (measured <= 3.8e-9), KKT residual < 1e-8, same number of
 # active constraints. The penetrating start uses Solver/Tolerance = 1e-10

@@ -3,7 +3,7 @@
 # scene without contact is a linear FOSLS problem, and the multigrid solver
 # gives the solution of the linear solve (the active set solver: one
 # direct solve): prm/elasticity_mms.prm (manufactured solution) on 4 and 5
-# levels, default solver (Krylov steps = 10) and plain cycle (Krylov steps
+# levels, default solver (Krylov steps = 50) and plain cycle (Krylov steps
 # = 0), Solver/Tolerance = 1e-12 (i.e. to the round-off floor). Checks: J
 # and the error norms |u - u_h|_L2, |u - u_h|_H1, |sigma - sigma_h|_L2,
 # |sigma - sigma_h|_Hdiv agree with the direct solve to 1e-8 relative; no

@@ -5,7 +5,7 @@
 # the square (prm/square.prm, 3 and 4 levels) and on the half disc
 # (prm/hertz.prm, 2 levels): relative difference of the contact force
 # vector and of J below 1e-8, KKT residual below 1e-8, the same number of
-# active constraints. Default solver (Krylov steps = 10) for all; the plain
+# active constraints. Default solver (Krylov steps = 50) for all; the plain
 # cycle (Krylov steps = 0) only on the square (measured: 11 iterations at 4
 # levels for each projection; on the half disc it does not converge, see
 # known problem bug_plain_cycle_hertz).

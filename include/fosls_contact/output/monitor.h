@@ -21,6 +21,7 @@ namespace FoslsContact
     double          rate          = 0; ///< correction_k / correction_{k-1}
     unsigned int    active        = 0;
     double          violation     = 0;
+    double          round_off     = 0; ///< ConstrainedQP::round_off_correction
     double          wall_seconds  = 0;
   };
 
@@ -96,6 +97,7 @@ namespace FoslsContact
     unsigned int                  cycles_after_first     = 0;
     bool                          has_converged          = false;
     bool                          at_floor               = false;
+    bool                          floor_stagnated        = false;
   };
 } // namespace FoslsContact
 

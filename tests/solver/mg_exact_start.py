@@ -1,20 +1,14 @@
 #!/usr/bin/env python3
-# Known problem (DISABLED in tests/CMakeLists.txt until the library is
-# fixed; the .output is what a fixed library must print): a run whose
-# start is already the exact solution never stops.
+# A start that is already the exact solution ends the run at once.
 # The square (prm/square.prm, 5 levels) with an initial gap of 0.02 > push
 # 0.01 has no contact; its exact solution, the rigid translation by
 # (0, -0.01) with zero stress, is discrete, so J* = 0 and the default
 # start (the level-1 solution, interpolated) is already exact. Every
-# correction is then round-off (~1e-16) and the stopping rule, which
-# measures corrections relative to the first one (itself round-off), is
-# never met: measured (Nov 2026, after commit 0d84ffa, which fixed the
-# same for one-level runs) "NOT converged after 200 iterations" (1009
-# cycles) for the default solver, likewise for the plain cycle and with
-# Solver/Initial guess = nested iteration (J = 1e-17, force 0, i.e. the
-# answer is right). From a zero
-# start both solvers converge in 3 and 12 iterations (checked in
-# hard_obstacles).
+# correction is then round-off (~1e-16). Until Nov 2026 the stopping rule,
+# which measures corrections relative to the first one (itself round-off),
+# was never met ("NOT converged after 200 iterations"); now a correction
+# within 10x of ConstrainedQP::round_off_correction ends the run: measured
+# 1 iteration for each of the three solvers below.
 # Reproduction: fosls-contact prm/square.prm --set Geometry/Levels=5
 #   --set Data/Gap=0.02
 # Checks: default solver, plain cycle (Krylov steps = 0) and nested

@@ -19,27 +19,43 @@ namespace FoslsContact
     const std::vector<DoFRole> &                             role)
   {
     Level &level = levels[l];
+    level        = Level();
     level.matrix = &matrix;
-    level.patches.clear();
-    level.patches.reserve(patches.size());
+    level.start.push_back(0);
+    level.inverse_start.push_back(0);
+    std::vector<types::global_dof_index> dofs;
     for (const auto &all_dofs : patches)
       {
-        Patch patch;
+        dofs.clear();
+        bool any_bounded = false;
         for (const auto dof : all_dofs)
           if (role[dof] != DoFRole::fixed && matrix.diag_element(dof) > 0)
             {
-              patch.dofs.push_back(dof);
-              patch.bounded.push_back(role[dof] == DoFRole::bounded);
+              dofs.push_back(dof);
+              any_bounded |= role[dof] == DoFRole::bounded;
             }
-        if (patch.dofs.empty())
+        if (dofs.empty())
           continue;
-        const unsigned int n = patch.dofs.size();
+        const unsigned int n = dofs.size();
         FullMatrix<double> M(n, n);
         for (unsigned int a = 0; a < n; ++a)
           for (unsigned int b = 0; b < n; ++b)
-            M(a, b) = matrix.el(patch.dofs[a], patch.dofs[b]);
-        patch.qp = BoxQP(M);
-        level.patches.push_back(std::move(patch));
+            M(a, b) = matrix.el(dofs[a], dofs[b]);
+        BoxQP qp(M);
+        for (unsigned int a = 0; a < n; ++a)
+          for (unsigned int b = 0; b < n; ++b)
+            level.inverse.push_back(qp.inverse_entry(a, b));
+        for (const auto dof : dofs)
+          {
+            level.dofs.push_back(dof);
+            level.bounded.push_back(role[dof] == DoFRole::bounded);
+          }
+        level.box_qp.push_back(any_bounded ? level.qps.size() :
+                                             numbers::invalid_unsigned_int);
+        if (any_bounded)
+          level.qps.push_back(std::move(qp));
+        level.start.push_back(level.dofs.size());
+        level.inverse_start.push_back(level.inverse.size());
       }
   }
 
@@ -63,29 +79,48 @@ namespace FoslsContact
     std::vector<double> g, s, c;
     std::vector<bool>   at_bound;
 
-    const unsigned int n_patches = level.patches.size();
+    const unsigned int n_patches = level.box_qp.size();
     for (unsigned int step = 0; step < steps; ++step)
-      for (unsigned int k = 0; k < n_patches; ++k)
+      for (unsigned int kk = 0; kk < n_patches; ++kk)
         {
-          const Patch &      patch = level.patches[backward ? n_patches - 1 - k : k];
-          const unsigned int n     = patch.dofs.size();
+          const unsigned int k     = backward ? n_patches - 1 - kk : kk;
+          const auto *       dofs  = level.dofs.data() + level.start[k];
+          const unsigned int n     = level.start[k + 1] - level.start[k];
+          const double *     inv   = level.inverse.data() + level.inverse_start[k];
           g.resize(n);
           s.resize(n);
           c.resize(n);
-          double scale = 0;
           for (unsigned int a = 0; a < n; ++a)
             {
-              const auto i  = patch.dofs[a];
+              const auto i  = dofs[a];
               double     gi = r[i];
               for (auto e = A.begin(i); e != A.end(i); ++e)
                 gi -= e->value() * v[e->column()];
               g[a] = gi;
-              s[a] = patch.bounded[a] ? std::max(0., ub[i] - v[i]) : inf;
+              s[a] = level.bounded[level.start[k] + a] ? std::max(0., ub[i] - v[i]) : inf;
             }
-          const double change = patch.qp.solve(g.data(), s.data(), c.data(), at_bound);
+          // the unconstrained patch minimizer c = M^{-1} g, and the change
+          // of the objective, 1/2 c^T M c - g^T c = -1/2 g^T c
+          bool   feasible = true;
+          double gc       = 0;
           for (unsigned int a = 0; a < n; ++a)
             {
-              const auto i = patch.dofs[a];
+              double ca = 0;
+              for (unsigned int b = 0; b < n; ++b)
+                ca += inv[a * n + b] * g[b];
+              c[a] = ca;
+              gc += g[a] * ca;
+              feasible &= ca <= s[a];
+            }
+          double change = -0.5 * gc;
+          if (feasible)
+            at_bound.assign(n, false);
+          else
+            change = level.qps[level.box_qp[k]].solve(g.data(), s.data(), c.data(), at_bound);
+          double scale = 0;
+          for (unsigned int a = 0; a < n; ++a)
+            {
+              const auto i = dofs[a];
               v[i] = at_bound[a] ? ub[i] : v[i] + c[a];
               scale += std::abs(g[a] * c[a]);
             }

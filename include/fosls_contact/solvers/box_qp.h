@@ -33,6 +33,12 @@ namespace FoslsContact
 
     unsigned int size() const { return matrix.m(); }
 
+    /** Entry (i, j) of the inverse of M. */
+    double inverse_entry(const unsigned int i, const unsigned int j) const
+    {
+      return inverse(i, j);
+    }
+
     /**
      * Solve; on return, c is the minimizer and at_bound[i] tells whether
      * c_i = s_i (then c_i is set to s_i exactly). Returns the change of

@@ -52,17 +52,26 @@ namespace FoslsContact
     unsigned int energy_increases() const { return n_increases; }
 
   private:
-    struct Patch
-    {
-      std::vector<types::global_dof_index> dofs;
-      std::vector<bool>                    bounded;
-      BoxQP                                qp;
-    };
+    /**
+     * The patches of one level, packed: patch k has the DoFs
+     * dofs[start[k] .. start[k+1]) and the inverse of its matrix (row
+     * major) at inverse[inverse_start[k] ..). A sweep streams through
+     * these arrays in order, which matters once a level no longer fits in
+     * cache (the inverses are as large as the sparse matrix). Only patches
+     * with a bounded DoF can hit an obstacle, so only they keep a BoxQP
+     * for the constrained case (box_qp[k], an index into qps).
+     */
     struct Level
     {
-      const SparseMatrix<double> *matrix    = nullptr;
-      const Vector<double> *      obstacles = nullptr;
-      std::vector<Patch>          patches;
+      const SparseMatrix<double> *         matrix    = nullptr;
+      const Vector<double> *               obstacles = nullptr;
+      std::vector<unsigned int>            start;
+      std::vector<std::size_t>             inverse_start;
+      std::vector<types::global_dof_index> dofs;
+      std::vector<bool>                    bounded;
+      std::vector<double>                  inverse;
+      std::vector<unsigned int>            box_qp;
+      std::vector<BoxQP>                   qps;
     };
     std::vector<Level>   levels;
     bool                 backward    = false;

@@ -2,6 +2,7 @@
 
 #include <fosls_contact/solvers/active_set_direct.h>
 
+#include <limits>
 #include <set>
 
 namespace FoslsContact
@@ -44,20 +45,20 @@ namespace FoslsContact
   } // namespace
 
 
-  unsigned int
-  ActiveSetDirect::solve_quietly(const SparseMatrix<double> &A,
-                                 const Vector<double> &      b,
-                                 const std::vector<DoFRole> &role,
-                                 const Vector<double> &      ub,
-                                 Vector<double> &            x,
-                                 const unsigned int          max_steps)
+  ActiveSetDirect::Outcome
+  ActiveSetDirect::iterate(const SparseMatrix<double> &A,
+                           const Vector<double> &      b,
+                           const std::vector<DoFRole> &role,
+                           const Vector<double> &      ub,
+                           Vector<double> &            x,
+                           const unsigned int          max_steps,
+                           Monitor *                   monitor)
   {
-    const auto         n = x.size();
-    std::vector<bool>  eliminated(n), active(n, false), previous;
-    Vector<double>     mu(n), Ax(n);
-    unsigned int       step = 0;
+    const auto        n = x.size();
+    std::vector<bool> eliminated(n), active(n, false), previous;
+    Vector<double>    mu(n), Ax(n), x_old;
     std::set<std::vector<bool>> seen;
-    for (; step < max_steps; ++step)
+    for (unsigned int step = 0; step < max_steps; ++step)
       {
         for (types::global_dof_index i = 0; i < n; ++i)
           {
@@ -69,18 +70,38 @@ namespace FoslsContact
               x[i] = ub[i];
           }
         if (step > 0 && active == previous)
-          break;
-        // A repeated active set means the method cycles: the last solve is
-        // the best we have, and the caller sees the KKT residual.
+          return Outcome::converged;
         if (!seen.insert(active).second)
-          break;
+          return Outcome::cycling;
         previous = active;
+        if (monitor)
+          x_old = x;
         solve_reduced(A, b, eliminated, x);
         A.vmult(Ax, x);
         for (types::global_dof_index i = 0; i < n; ++i)
           mu[i] = active[i] ? b[i] - Ax[i] : 0.;
+        // The iterate of a PDAS step may be infeasible until the last
+        // step; it is reported as it is. The monitor's own stopping rule
+        // does not end the method (only the repeated active set does),
+        // its iteration limit does.
+        if (monitor && monitor->report(x, x_old) && !monitor->converged())
+          return Outcome::out_of_steps;
       }
-    return step;
+    return Outcome::out_of_steps;
+  }
+
+
+  bool
+  ActiveSetDirect::solve_quietly(const SparseMatrix<double> &A,
+                                 const Vector<double> &      b,
+                                 const std::vector<DoFRole> &role,
+                                 const Vector<double> &      ub,
+                                 Vector<double> &            x,
+                                 const unsigned int          max_steps)
+  {
+    // A repeated active set means the method cycles: the last solve is the
+    // best there is, and the caller's KKT residual shows its quality.
+    return iterate(A, b, role, ub, x, max_steps, nullptr) == Outcome::converged;
   }
 
 
@@ -91,40 +112,18 @@ namespace FoslsContact
   {
     qp.project_to_feasible(x);
     monitor.start(x);
-    const auto        n = x.size();
-    std::vector<bool> eliminated(n), active(n, false), previous;
-    Vector<double>    mu(n), Ax(n), x_old(x);
-    std::set<std::vector<bool>> seen;
-    for (unsigned int step = 0;; ++step)
-      {
-        for (types::global_dof_index i = 0; i < n; ++i)
-          {
-            if (qp.role[i] == DoFRole::bounded)
-              active[i] = mu[i] + qp.matrix.diag_element(i) *
-                                    (x[i] - qp.upper_bounds[i]) > 0;
-            eliminated[i] = qp.role[i] == DoFRole::fixed || active[i];
-            if (active[i])
-              x[i] = qp.upper_bounds[i];
-          }
-        if (step > 0 && active == previous)
-          {
-            monitor.set_converged();
-            break;
-          }
-        AssertThrow(seen.insert(active).second,
-                    ExcMessage("active set: the primal-dual active set method "
-                               "cycles (an active set repeated); use Solver/Type "
-                               "= monotone multigrid"));
-        previous = active;
-        x_old    = x;
-        solve_reduced(qp.matrix, qp.rhs, eliminated, x);
-        qp.matrix.vmult(Ax, x);
-        for (types::global_dof_index i = 0; i < n; ++i)
-          mu[i] = active[i] ? qp.rhs[i] - Ax[i] : 0.;
-        // The iterate of a PDAS step may be infeasible until the last
-        // step; report it as it is.
-        if (monitor.report(x, x_old) && !monitor.converged())
-          break;
-      }
+    const Outcome outcome = iterate(qp.matrix,
+                                    qp.rhs,
+                                    qp.role,
+                                    qp.upper_bounds,
+                                    x,
+                                    std::numeric_limits<unsigned int>::max(),
+                                    &monitor);
+    AssertThrow(outcome != Outcome::cycling,
+                ExcMessage("active set: the primal-dual active set method "
+                           "cycles (an active set repeated); use Solver/Type "
+                           "= monotone multigrid"));
+    if (outcome == Outcome::converged)
+      monitor.set_converged();
   }
 } // namespace FoslsContact

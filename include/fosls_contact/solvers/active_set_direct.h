@@ -23,14 +23,35 @@ namespace FoslsContact
     /**
      * The same method without a monitor, for small problems (the coarsest
      * level of the multigrid method). DoFs with a zero diagonal are treated
-     * as fixed at their value in @p x. Returns the number of steps.
+     * as fixed at their value in @p x. Returns whether the active set
+     * settled within @p max_steps.
      */
-    static unsigned int solve_quietly(const SparseMatrix<double> &matrix,
+    static bool solve_quietly(const SparseMatrix<double> &matrix,
                                       const Vector<double> &      rhs,
                                       const std::vector<DoFRole> &role,
                                       const Vector<double> &      upper_bounds,
                                       Vector<double> &            x,
                                       const unsigned int          max_steps);
+
+  private:
+    enum class Outcome
+    {
+      converged,   ///< the active set repeated in consecutive steps
+      cycling,     ///< an earlier active set came back
+      out_of_steps ///< the step limit (or the monitor's) was reached
+    };
+
+    /**
+     * The method itself, shared by solve() and solve_quietly(): reports
+     * every step to @p monitor if there is one.
+     */
+    static Outcome iterate(const SparseMatrix<double> &A,
+                           const Vector<double> &      b,
+                           const std::vector<DoFRole> &role,
+                           const Vector<double> &      ub,
+                           Vector<double> &            x,
+                           const unsigned int          max_steps,
+                           Monitor *                   monitor);
   };
 } // namespace FoslsContact
 

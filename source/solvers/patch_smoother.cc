@@ -19,10 +19,10 @@ namespace FoslsContact
     const std::vector<DoFRole> &                             role)
   {
     Level &level = levels[l];
-    level        = Level();
-    level.matrix = &matrix;
+    level = Level();
     level.start.push_back(0);
     level.inverse_start.push_back(0);
+    level.row_start.push_back(0);
     std::vector<types::global_dof_index> dofs;
     for (const auto &all_dofs : patches)
       {
@@ -49,6 +49,13 @@ namespace FoslsContact
           {
             level.dofs.push_back(dof);
             level.bounded.push_back(role[dof] == DoFRole::bounded);
+            for (auto e = matrix.begin(dof); e != matrix.end(dof); ++e)
+              if (e->value() != 0.)
+                {
+                  level.columns.push_back(e->column());
+                  level.values.push_back(e->value());
+                }
+            level.row_start.push_back(level.values.size());
           }
         level.box_qp.push_back(any_bounded ? level.qps.size() :
                                              numbers::invalid_unsigned_int);
@@ -73,7 +80,6 @@ namespace FoslsContact
                         const Vector<double> &r) const
   {
     const Level &level = levels[l];
-    const auto & A     = *level.matrix;
     const auto & ub    = *level.obstacles;
     const double inf   = std::numeric_limits<double>::infinity();
     std::vector<double> g, s, c;
@@ -92,10 +98,14 @@ namespace FoslsContact
           c.resize(n);
           for (unsigned int a = 0; a < n; ++a)
             {
-              const auto i  = dofs[a];
-              double     gi = r[i];
-              for (auto e = A.begin(i); e != A.end(i); ++e)
-                gi -= e->value() * v[e->column()];
+              const auto         i     = dofs[a];
+              const std::size_t  first = level.row_start[level.start[k] + a];
+              const std::size_t  last  = level.row_start[level.start[k] + a + 1];
+              const unsigned int *column = level.columns.data();
+              const double *      value  = level.values.data();
+              double              gi     = r[i];
+              for (std::size_t e = first; e < last; ++e)
+                gi -= value[e] * v[column[e]];
               g[a] = gi;
               s[a] = level.bounded[level.start[k] + a] ? std::max(0., ub[i] - v[i]) : inf;
             }

@@ -38,6 +38,7 @@ namespace FoslsContact
     void assemble();
     void check_definiteness();
     void make_initial_guess();
+    void setup_solver();
     void solve();
     void output_results();
 
@@ -60,6 +61,7 @@ namespace FoslsContact
     std::unique_ptr<LevelTransfer<dim>>  transfer;
     ConstrainedQP                        qp;
     Vector<double>                       solution;
+    std::unique_ptr<QPSolver>            solver;
     std::unique_ptr<Monitor>             monitor;
     double                               time_setup = 0, time_solve = 0;
   };

@@ -3,6 +3,7 @@
 #include <fosls_contact/solvers/coarse_obstacles.h>
 #include <fosls_contact/solvers/monotone_multigrid.h>
 
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
@@ -30,7 +31,26 @@ namespace FoslsContact
     , version(finest_level + 1, 0)
     , version_used(finest_level + 1, numbers::invalid_unsigned_int)
     , built(finest_level + 1, false)
-  {}
+  {
+    // The sparsity patterns of the Galerkin products for the untruncated
+    // prolongations; they hold every truncated product as well, so the
+    // solve only recomputes values.
+    for (unsigned int l = finest; l > 0; --l)
+      {
+        const SparsityPattern &A = l == finest ?
+                                     discretization.level(finest).sparsity :
+                                     galerkin_sparsity[l];
+        const SparsityPattern &P = hierarchy.prolongation(l).get_sparsity_pattern();
+        DynamicSparsityPattern product_dsp, galerkin_dsp;
+        product_dsp.compute_mmult_pattern(A, P);
+        product_sparsity[l].copy_from(product_dsp);
+        galerkin_dsp.compute_Tmmult_pattern(P, product_sparsity[l]);
+        galerkin_sparsity[l - 1].copy_from(galerkin_dsp);
+        truncated_prolongation[l].reinit(P);
+        product[l].reinit(product_sparsity[l]);
+        galerkin[l - 1].reinit(galerkin_sparsity[l - 1]);
+      }
+  }
 
 
   template <int dim>
@@ -44,18 +64,6 @@ namespace FoslsContact
     const auto timing = section("Solve: Galerkin operators and patch setup");
 
     const SparseMatrix<double> &P = hierarchy.prolongation(l);
-    if (!built[l])
-      {
-        truncated_prolongation[l].reinit(P.get_sparsity_pattern());
-        // first product: build the sparsity patterns of the untruncated
-        // product, which then hold every truncated product as well
-        product_sparsity[l].reinit(0, 0, 0);
-        product_sparsity[l].compress();
-        product[l].reinit(product_sparsity[l]);
-        galerkin_sparsity[l - 1].reinit(0, 0, 0);
-        galerkin_sparsity[l - 1].compress();
-        galerkin[l - 1].reinit(galerkin_sparsity[l - 1]);
-      }
     truncated_prolongation[l].copy_from(P);
     for (types::global_dof_index i = 0; i < truncated.size(); ++i)
       if (truncated[i])
@@ -80,11 +88,8 @@ namespace FoslsContact
       if (removed[e->column()])
         e->value() = 0;
 
-    A.mmult(product[l], truncated_prolongation[l], Vector<double>(), !built[l]);
-    truncated_prolongation[l].Tmmult(galerkin[l - 1],
-                                     product[l],
-                                     Vector<double>(),
-                                     !built[l]);
+    A.mmult(product[l], truncated_prolongation[l], Vector<double>(), false);
+    truncated_prolongation[l].Tmmult(galerkin[l - 1], product[l], Vector<double>(), false);
     built[l]           = true;
     truncation_used[l] = truncated;
     version_used[l]    = version[l];

@@ -58,28 +58,20 @@ namespace FoslsContact
     sparsities.resize(n_levels);
     matrices.resize(n_levels);
 
+    // One walk over the parent cells collects the entries (child DoF,
+    // parent DoF, signed embedding value); a child DoF shared by several
+    // children gets the same value from each, so the last one written is
+    // as good as any.
+    struct Entry
+    {
+      types::global_dof_index row, column;
+      double                  value;
+    };
     std::vector<types::global_dof_index> parent_dofs(n), child_dofs(n);
     for (unsigned int l = 1; l < n_levels; ++l)
       {
+        std::vector<Entry>     entries;
         DynamicSparsityPattern dsp(dof_handler.n_dofs(l), dof_handler.n_dofs(l - 1));
-        for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l - 1))
-          if (cell->has_children())
-            {
-              cell->get_mg_dof_indices(parent_dofs);
-              for (unsigned int c = 0; c < cell->n_children(); ++c)
-                {
-                  const FullMatrix<double> &P =
-                    fe.get_prolongation_matrix(c, cell->refinement_case());
-                  cell->child(c)->get_mg_dof_indices(child_dofs);
-                  for (unsigned int i = 0; i < n; ++i)
-                    for (unsigned int j = 0; j < n; ++j)
-                      if (P(i, j) != 0)
-                        dsp.add(child_dofs[i], parent_dofs[j]);
-                }
-            }
-        sparsities[l] = std::make_unique<SparsityPattern>();
-        sparsities[l]->copy_from(dsp);
-        matrices[l] = std::make_unique<SparseMatrix<double>>(*sparsities[l]);
         for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l - 1))
           if (cell->has_children())
             {
@@ -94,12 +86,19 @@ namespace FoslsContact
                   for (unsigned int i = 0; i < n; ++i)
                     for (unsigned int j = 0; j < n; ++j)
                       if (P(i, j) != 0)
-                        matrices[l]->set(child_dofs[i],
-                                         parent_dofs[j],
-                                         child_signs[i] * P(i, j) *
-                                           parent_signs[j]);
+                        {
+                          dsp.add(child_dofs[i], parent_dofs[j]);
+                          entries.push_back({child_dofs[i],
+                                             parent_dofs[j],
+                                             child_signs[i] * P(i, j) * parent_signs[j]});
+                        }
                 }
             }
+        sparsities[l] = std::make_unique<SparsityPattern>();
+        sparsities[l]->copy_from(dsp);
+        matrices[l] = std::make_unique<SparseMatrix<double>>(*sparsities[l]);
+        for (const auto &e : entries)
+          matrices[l]->set(e.row, e.column, e.value);
       }
   }
 

@@ -226,3 +226,23 @@ def compare_with_reference(run, reference, label, force_tolerance=1e-8,
     check(run["active"] == reference["active"],
           label + ": active constraints as the reference (%s)"
           % reference["active"])
+
+
+def check_flat_contact_run(run, max_iterations, n_contact_vertices):
+    """The checks of a multigrid run on a flat obstacle that the whole
+    contact boundary touches (hard_cube3d, hard_deep_hierarchy): converged
+    within @p max_iterations to a KKT residual < 1e-10, monotone and
+    feasible, and all @p n_contact_vertices contact vertices in contact
+    (last column of contact.csv)."""
+    describe(run, "multigrid", ("dofs", "iterations", "cycles", "converged",
+                                "active"))
+    check(run["converged"] is True and run["iterations"] <= max_iterations,
+          "converged within %d iterations" % max_iterations)
+    check(run["kkt_residual"] is not None and run["kkt_residual"] < 1e-10,
+          "KKT residual < 1e-10")
+    check_monotone_feasible(run, "multigrid")
+    with open(os.path.join(run.directory, "contact.csv")) as f:
+        rows = [r.split(",") for r in f.read().splitlines()[1:] if r]
+    check(len(rows) == n_contact_vertices
+          and all(r[-1].strip() == "1" for r in rows),
+          "all %d bottom vertices in contact" % n_contact_vertices)

@@ -200,6 +200,13 @@ def main():
             {"group": "hertz", "config": "default", "lambda": lam, "level": 4,
              "grading": 2}, timeout=120)
 
+    # c2. 3D Hertz: the block on the ball (level 5: 209139 DoFs, 8
+    # iterations, about 200 s and 3.5 GB on this machine)
+    for L in [3, 4, 5]:
+        run(f"ball3d_L{L}", "ball3d.prm", {"Geometry/Levels": str(L)},
+            {"group": "ball3d", "config": "default", "lambda": "1", "level": L},
+            timeout=900)
+
     # a, d, f: the square, levels 2..8 first, level 9 at the end
     last = {}
     for config in ["default", "plainV", "plainW"]:

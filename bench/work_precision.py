@@ -121,7 +121,7 @@ def config(name):
     s["Solver/Cycle"] = cyc
     s["Solver/Projection"] = proj
     desc = dict(solver="monotone multigrid", cycle=cyc, projection=proj,
-                krylov_steps=0 if kind == "plain" else 10,
+                krylov_steps=0 if kind == "plain" else 50,  # the default
                 stopping="tolerance", tolerance="1e-8", contact="scene",
                 body_force="scene")
     if kind == "plain":

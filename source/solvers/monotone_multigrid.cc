@@ -292,9 +292,8 @@ namespace FoslsContact
     // The linear problem keeps a DoF at its bound only where the bound
     // holds it: the multiplier mu_i = (b - A x)_i is positive. A DoF that
     // sits at its bound while the gradient pulls it inside (mu_i < 0) is
-    // left free, so that the Newton direction can release it; the
-    // projected line search keeps the step feasible.
-    Vector<double> residual(n), d(n);
+    // left free, so that the Newton direction can release it.
+    Vector<double> residual(n), d(n), increment(n), rhs(n), Ae(n);
     A.vmult(residual, x);
     residual.sadd(-1., 1., qp.rhs);
     linear_role = qp.role;
@@ -303,17 +302,8 @@ namespace FoslsContact
         linear_role[i] = (x[i] >= qp.upper_bounds[i] && residual[i] >= 0) ?
                            DoFRole::fixed :
                            DoFRole::free;
-    if (linear_role != linear_role_used)
-      {
-        linear_smoother.initialize_level(finest, A, hierarchy.patches(finest), linear_role);
-        linear_role_used = linear_role;
-      }
-    for (types::global_dof_index i = 0; i < n; ++i)
-      if (linear_role[i] == DoFRole::fixed)
-        residual[i] = 0;
 
-    const Vector<double> no_bounds(n);
-    Vector<double>       infinite(n);
+    Vector<double> infinite(n);
     infinite = std::numeric_limits<double>::infinity();
     auto apply_cycle = [&](const Vector<double> &r, Vector<double> &v) {
       cycle(finest, A, r, infinite, linear_role, v, true);
@@ -321,48 +311,84 @@ namespace FoslsContact
     };
     CyclePreconditioner<decltype(apply_cycle)> preconditioner{apply_cycle};
     TruncatedOperator                           op{A, linear_role};
-    SolverControl control(parameters.krylov_steps, 1e-3 * residual.l2_norm(), false, false);
-    SolverCG<Vector<double>> cg(control);
-    try
+
+    // The Newton direction d = increment + (solution of the linear problem
+    // on the free DoFs). A free DoF that the direction would push past its
+    // bound is moved exactly to its bound instead (a prescribed increment)
+    // and the linear problem is solved again without it, up to three
+    // times, as in a primal-dual active set step: otherwise the projection
+    // in the line search cuts such a DoF back, and the rest of the
+    // direction, computed for it moving on, is far from a good step
+    // (measured on the graded half disc, prm/hertz.prm with 4 levels and
+    // Grading 2: two such DoFs made the projected step's energy 1e6 times
+    // its decrease, and the run took 49 iterations).
+    for (unsigned int round = 0; round < 4; ++round)
       {
-        cg.solve(op, d, residual, preconditioner);
-      }
-    catch (const SolverControl::NoConvergence &)
-      {
-        // a fixed number of steps: the last iterate is the direction
+        if (linear_role != linear_role_used)
+          {
+            linear_smoother.initialize_level(finest, A, hierarchy.patches(finest), linear_role);
+            linear_role_used = linear_role;
+          }
+        A.vmult(Ae, increment);
+        rhs = residual;
+        rhs -= Ae;
+        for (types::global_dof_index i = 0; i < n; ++i)
+          if (linear_role[i] == DoFRole::fixed)
+            rhs[i] = 0;
+        SolverControl control(parameters.krylov_steps, 1e-3 * rhs.l2_norm(), false, false);
+        SolverCG<Vector<double>> cg(control);
+        d = 0;
+        try
+          {
+            cg.solve(op, d, rhs, preconditioner);
+          }
+        catch (const SolverControl::NoConvergence &)
+          {
+            // at most krylov_steps steps: the last iterate is the direction
+          }
+        d += increment;
+        bool violated = false;
+        for (types::global_dof_index i = 0; round < 3 && i < n; ++i)
+          if (qp.role[i] == DoFRole::bounded && linear_role[i] == DoFRole::free &&
+              x[i] + d[i] > qp.upper_bounds[i])
+            {
+              linear_role[i] = DoFRole::fixed;
+              increment[i]   = qp.upper_bounds[i] - x[i];
+              violated       = true;
+            }
+        if (!violated)
+          break;
       }
 
-    // Projected line search: x(alpha) = P_K(x + alpha d), accepted when J
-    // decreases; alpha starts at the minimizer along d and is halved.
-    Vector<double> Ad(n), trial(n);
+    // Line search along the projected Newton step: p = P_K(x + alpha d),
+    // alpha the minimizer along d. Every point of the segment [x, p] is
+    // feasible (K is convex) and J is a quadratic on it, so its minimizer
+    // t in (0, 1] is taken: J decreases whenever p - x is a descent
+    // direction. Otherwise the feasible part of the step along d is taken,
+    // which decreases J by convexity.
+    Vector<double> Ad(n), step(n);
     A.vmult(Ad, d);
     const double dAd = d * Ad, dr = d * residual;
     if (!(dAd > 0) || !(dr > 0))
       return n_cycles;
-    const double J0    = qp.value(x);
-    double       alpha = dr / dAd;
-    bool         accepted = false;
-    for (unsigned int k = 0; k < 12 && !accepted; ++k, alpha *= 0.5)
+    step = x;
+    step.add(dr / dAd, d);
+    qp.project_to_feasible(step);
+    step -= x;
+    Vector<double> As(n);
+    A.vmult(As, step);
+    const double sAs = step * As, sr = step * residual;
+    if (sAs > 0 && sr > 0)
+      x.add(std::min(1., sr / sAs), step);
+    else
       {
-        trial = x;
-        trial.add(alpha, d);
-        qp.project_to_feasible(trial);
-        if (qp.value(trial) <= J0)
-          {
-            x        = trial;
-            accepted = true;
-          }
-      }
-    if (!accepted)
-      {
-        // the feasible part of the step along d decreases J by convexity
-        double step = dr / dAd;
+        double t = dr / dAd;
         for (types::global_dof_index i = 0; i < n; ++i)
           if (qp.role[i] == DoFRole::bounded && d[i] > 0)
-            step = std::min(step, std::max(0., (qp.upper_bounds[i] - x[i]) / d[i]));
-        x.add(step, d);
-        qp.project_to_feasible(x); // round-off only
+            t = std::min(t, std::max(0., (qp.upper_bounds[i] - x[i]) / d[i]));
+        x.add(t, d);
       }
+    qp.project_to_feasible(x); // round-off only
 
     smoother.set_obstacles(finest, qp.upper_bounds);
     smoother.set_backward(true);

@@ -534,7 +534,9 @@ PH = [("setup", lambda r: r["t_setup"]), ("assembly", lambda r: r["t_assembly"])
       ("smoothing", lambda r: r["t_smoothing"]), ("coarse solve", lambda r: r["t_coarse"]),
       ("solve, rest", lambda r: r["t_solve"] - r["t_galerkin"] - r["t_smoothing"] - r["t_coarse"]),
       ("output + process", lambda r: r["t_output"])]
-md.append("From `time_sections_s` of summary.json (TimerOutput wall seconds). The three "
+md.append("From `time_sections_s` of summary.json (TimerOutput wall seconds). 'setup' = "
+          "mesh, DoFs and levels plus the solver's set-up (multigrid hierarchy, patches, "
+          "sparsity patterns of the Galerkin products). The three "
           "`Solve: ...` sections lie inside `Solve`; 'solve, rest' is `Solve` minus them (CG "
           "steps, line search, restriction/prolongation, monitor). There is no output section "
           "in summary.json: **'output + process' = the process wall time measured by the script "

@@ -30,7 +30,6 @@ namespace FoslsContact
     , truncation_used(finest_level + 1)
     , version(finest_level + 1, 0)
     , version_used(finest_level + 1, numbers::invalid_unsigned_int)
-    , built(finest_level + 1, false)
   {
     // The sparsity patterns of the Galerkin products for the untruncated
     // prolongations; they hold every truncated product as well, so the
@@ -59,7 +58,8 @@ namespace FoslsContact
                                                  const SparseMatrix<double> &A,
                                                  const std::vector<bool> &   truncated)
   {
-    if (built[l] && truncated == truncation_used[l] && version[l] == version_used[l])
+    // (truncation_used[l] is empty until the first product)
+    if (truncated == truncation_used[l] && version[l] == version_used[l])
       return;
     const auto timing = section("Solve: Galerkin operators and patch setup");
 
@@ -90,7 +90,6 @@ namespace FoslsContact
 
     A.mmult(product[l], truncated_prolongation[l], Vector<double>(), false);
     truncated_prolongation[l].Tmmult(galerkin[l - 1], product[l], Vector<double>(), false);
-    built[l]           = true;
     truncation_used[l] = truncated;
     version_used[l]    = version[l];
     ++version[l - 1];

@@ -109,7 +109,6 @@ namespace FoslsContact
     std::vector<SparseMatrix<double>>                  truncated_prolongation;
     std::vector<std::vector<bool>>                     truncation_used;
     std::vector<unsigned int>                          version, version_used;
-    std::vector<bool>                                  built;
     TimerOutput *                                      timer   = nullptr;
     unsigned int                                       n_increases = 0;
     unsigned int                                       n_dampings  = 0;

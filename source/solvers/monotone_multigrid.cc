@@ -328,9 +328,12 @@ namespace FoslsContact
             linear_smoother.initialize_level(finest, A, hierarchy.patches(finest), linear_role);
             linear_role_used = linear_role;
           }
-        A.vmult(Ae, increment);
         rhs = residual;
-        rhs -= Ae;
+        if (round > 0) // the increment is zero until a DoF was moved to its bound
+          {
+            A.vmult(Ae, increment);
+            rhs -= Ae;
+          }
         for (types::global_dof_index i = 0; i < n; ++i)
           if (linear_role[i] == DoFRole::fixed)
             rhs[i] = 0;

@@ -9,6 +9,7 @@ namespace FoslsContact
   CoarseObstacles::project(const Parameters::Solver::Projection projection,
                            const std::vector<VertexRelation> &  vertices,
                            const std::vector<FaceRelation> &    faces,
+                           const std::vector<double> &          face_scale,
                            const Vector<double> &               d,
                            Vector<double> &                     ub)
   {
@@ -55,12 +56,12 @@ namespace FoslsContact
         ub[r.coarse_dof] = value;
       }
 
-    for (const auto &f : faces)
+    for (unsigned int k = 0; k < faces.size(); ++k)
       {
         double value = infinity;
-        for (const auto son : f.sons)
+        for (const auto son : faces[k].sons)
           value = std::min(value, d[son]);
-        ub[f.coarse_dof] = value;
+        ub[faces[k].coarse_dof] = value / face_scale[k];
       }
   }
 } // namespace FoslsContact

@@ -7,7 +7,9 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <limits>
 
 namespace FoslsContact
@@ -24,22 +26,38 @@ namespace FoslsContact
     , linear_smoother(finest_level + 1)
     , galerkin_sparsity(finest_level + 1)
     , product_sparsity(finest_level + 1)
+    , prolongation_sparsity(finest_level + 1)
+    , face_scale(finest_level + 1)
     , galerkin(finest_level + 1)
     , product(finest_level + 1)
     , truncated_prolongation(finest_level + 1)
     , truncation_used(finest_level + 1)
     , version(finest_level + 1, 0)
     , version_used(finest_level + 1, numbers::invalid_unsigned_int)
+    , reroute_used(finest_level + 1, false)
   {
-    // The sparsity patterns of the Galerkin products for the untruncated
-    // prolongations; they hold every truncated product as well, so the
-    // solve only recomputes values.
+    // The sparsity patterns of the truncated prolongations (P's pattern
+    // plus, in the column of each coarse contact face, the DoFs coupled to
+    // its sons, which the flux rerouting may use) and of their Galerkin
+    // products; they hold every truncated product, so the solve only
+    // recomputes values.
     for (unsigned int l = finest; l > 0; --l)
       {
         const SparsityPattern &A = l == finest ?
                                      discretization.level(finest).sparsity :
                                      galerkin_sparsity[l];
-        const SparsityPattern &P = hierarchy.prolongation(l).get_sparsity_pattern();
+        const SparsityPattern &P0 = hierarchy.prolongation(l).get_sparsity_pattern();
+        DynamicSparsityPattern prolongation_dsp(P0.n_rows(), P0.n_cols());
+        for (auto e = P0.begin(); e != P0.end(); ++e)
+          prolongation_dsp.add(e->row(), e->column());
+        for (const auto &face : hierarchy.face_relations(l))
+          for (const auto son : face.sons)
+            for (auto e = A.begin(son); e != A.end(son); ++e)
+              prolongation_dsp.add(e->column(), face.coarse_dof);
+        prolongation_sparsity[l].copy_from(prolongation_dsp);
+        face_scale[l].assign(hierarchy.face_relations(l).size(), 1.);
+
+        const SparsityPattern &P = prolongation_sparsity[l];
         DynamicSparsityPattern product_dsp, galerkin_dsp;
         product_dsp.compute_mmult_pattern(A, P);
         product_sparsity[l].copy_from(product_dsp);
@@ -56,48 +74,123 @@ namespace FoslsContact
   void
   MonotoneMultigrid<dim>::update_coarse_operator(const unsigned int          l,
                                                  const SparseMatrix<double> &A,
-                                                 const std::vector<bool> &   truncated)
+                                                 const std::vector<DoFRole> &role,
+                                                 const std::vector<bool> &   truncated,
+                                                 const bool                  reroute)
   {
     // (truncation_used[l] is empty until the first product)
-    if (truncated == truncation_used[l] && version[l] == version_used[l])
+    if (truncated == truncation_used[l] && version[l] == version_used[l] &&
+        reroute == reroute_used[l])
       return;
     const auto timing = section("Solve: Galerkin operators and patch setup");
 
+    SparseMatrix<double> &Pt = truncated_prolongation[l];
+    Pt = 0;
     const SparseMatrix<double> &P = hierarchy.prolongation(l);
-    truncated_prolongation[l].copy_from(P);
-    for (types::global_dof_index i = 0; i < truncated.size(); ++i)
-      if (truncated[i])
-        for (auto e = truncated_prolongation[l].begin(i);
-             e != truncated_prolongation[l].end(i);
-             ++e)
-          e->value() = 0;
-    // Truncation of a normal stress DoF removes its father instead of
-    // cutting the father's function: a coarse RT function stripped of the
-    // flux through some of its son faces has a large divergence there and
-    // is useless as a coarse direction, while the father's function without
-    // that face (zero flux through it, as on a Neumann face) is a proper
-    // H(div) function that leaves the son's normal stress alone.
+    for (auto e = P.begin(); e != P.end(); ++e)
+      if (!truncated[e->row()])
+        Pt.set(e->row(), e->column(), e->value());
     std::vector<bool> removed(P.n(), false);
-    for (const auto &face : hierarchy.face_relations(l))
-      for (const auto son : face.sons)
-        if (truncated[son])
-          removed[face.coarse_dof] = true;
-    for (auto e = truncated_prolongation[l].begin();
-         e != truncated_prolongation[l].end();
-         ++e)
+    if (reroute)
+      reroute_flux(l, A, role, truncated, removed);
+    else
+      {
+        // a coarse face with a truncated son goes
+        std::fill(face_scale[l].begin(), face_scale[l].end(), 1.);
+        for (const auto &face : hierarchy.face_relations(l))
+          for (const auto son : face.sons)
+            if (truncated[son])
+              removed[face.coarse_dof] = true;
+      }
+    for (auto e = Pt.begin(); e != Pt.end(); ++e)
       if (removed[e->column()])
         e->value() = 0;
 
-    A.mmult(product[l], truncated_prolongation[l], Vector<double>(), false);
-    truncated_prolongation[l].Tmmult(galerkin[l - 1], product[l], Vector<double>(), false);
+    A.mmult(product[l], Pt, Vector<double>(), false);
+    Pt.Tmmult(galerkin[l - 1], product[l], Vector<double>(), false);
     truncation_used[l] = truncated;
     version_used[l]    = version[l];
+    reroute_used[l]    = reroute;
     ++version[l - 1];
     if (l - 1 > 0)
       smoother.initialize_level(l - 1,
                                 galerkin[l - 1],
                                 hierarchy.patches(l - 1),
                                 hierarchy.level(l - 1).role);
+  }
+
+
+  template <int dim>
+  void
+  MonotoneMultigrid<dim>::reroute_flux(const unsigned int          l,
+                                       const SparseMatrix<double> &A,
+                                       const std::vector<DoFRole> &role,
+                                       const std::vector<bool> &   truncated,
+                                       std::vector<bool> &         removed)
+  {
+    SparseMatrix<double> &      Pt    = truncated_prolongation[l];
+    const SparseMatrix<double> &P    = hierarchy.prolongation(l);
+    const auto &                faces = hierarchy.face_relations(l);
+    for (unsigned int k = 0; k < faces.size(); ++k)
+      {
+        const auto &face = faces[k];
+        const auto  j    = face.coarse_dof;
+        face_scale[l][k] = 1.;
+        std::vector<types::global_dof_index> free_sons;
+        double                               lost = 0;
+        for (const auto son : face.sons)
+          if (truncated[son])
+            lost += P.el(son, j);
+          else
+            free_sons.push_back(son);
+        if (free_sons.size() == face.sons.size())
+          continue;
+        if (free_sons.empty())
+          {
+            // no flux can pass: the father goes (a coarse function cut at
+            // all its sons would only carry divergence)
+            removed[j] = true;
+            continue;
+          }
+
+        // d: the change of the column at the sons
+        std::map<types::global_dof_index, double> d;
+        for (const auto son : face.sons)
+          d[son] = truncated[son] ? -P.el(son, j) : lost / free_sons.size();
+        for (const auto son : free_sons)
+          {
+            Pt.add(son, j, d[son]);
+            face_scale[l][k] = std::max(face_scale[l][k], Pt.el(son, j));
+          }
+
+        // the local correction e on the free, unbounded DoFs at the sons
+        std::vector<types::global_dof_index> local;
+        for (const auto son : face.sons)
+          for (auto e = A.begin(son); e != A.end(son); ++e)
+            {
+              const auto i = e->column();
+              if (!truncated[i] && role[i] == DoFRole::free && d.count(i) == 0 &&
+                  std::find(local.begin(), local.end(), i) == local.end())
+                local.push_back(i);
+            }
+        if (local.empty())
+          continue;
+        const unsigned int n = local.size();
+        FullMatrix<double> A_local(n, n);
+        Vector<double>     rhs(n), e(n);
+        for (unsigned int a = 0; a < n; ++a)
+          {
+            for (unsigned int b = 0; b < n; ++b)
+              A_local(a, b) = A.el(local[a], local[b]);
+            for (const auto &[son, value] : d)
+              rhs[a] -= A.el(local[a], son) * value;
+          }
+        FullMatrix<double> inverse(n, n);
+        inverse.invert(A_local);
+        inverse.vmult(e, rhs);
+        for (unsigned int a = 0; a < n; ++a)
+          Pt.add(local[a], j, e[a]);
+      }
   }
 
 
@@ -110,30 +203,50 @@ namespace FoslsContact
                                        Vector<double> &            v)
   {
     const auto timing = section("Solve: coarse solve");
-    std::vector<types::global_dof_index> dofs;
-    for (types::global_dof_index i = 0; i < v.size(); ++i)
-      if (role[i] != DoFRole::fixed && A.diag_element(i) > 0)
-        dofs.push_back(i);
-    const unsigned int n = dofs.size();
+    if (&A != coarse_matrix || version[0] != coarse_version)
+      {
+        // factorize once per coarse operator: it changes only with the
+        // truncation, while the W-cycles of a Newton step visit it
+        // hundreds of times (measured on the half disc, 4 levels: 1700
+        // coarse solves, 31 ms each when factorized every time)
+        coarse_matrix  = &A;
+        coarse_version = version[0];
+        coarse_dofs.clear();
+        for (types::global_dof_index i = 0; i < v.size(); ++i)
+          if (role[i] != DoFRole::fixed && A.diag_element(i) > 0)
+            coarse_dofs.push_back(i);
+        if (coarse_dofs.size() <= 2000)
+          {
+            const unsigned int n = coarse_dofs.size();
+            FullMatrix<double> M(n, n);
+            for (unsigned int a = 0; a < n; ++a)
+              for (auto e = A.begin(coarse_dofs[a]); e != A.end(coarse_dofs[a]); ++e)
+                {
+                  const auto b = std::lower_bound(coarse_dofs.begin(), coarse_dofs.end(), e->column());
+                  if (b != coarse_dofs.end() && *b == e->column())
+                    M(a, b - coarse_dofs.begin()) = e->value();
+                }
+            coarse_qp = BoxQP(M);
+          }
+      }
+    const auto &       dofs = coarse_dofs;
+    const unsigned int n    = dofs.size();
     if (n == 0)
       return;
     if (n <= 2000)
       {
-        FullMatrix<double> M(n, n);
         Vector<double>     g(n), s(n), c;
         std::vector<bool>  at_bound;
         Vector<double>     Av(v.size());
         A.vmult(Av, v);
         for (unsigned int a = 0; a < n; ++a)
           {
-            for (unsigned int b = 0; b < n; ++b)
-              M(a, b) = A.el(dofs[a], dofs[b]);
             g[a] = r[dofs[a]] - Av[dofs[a]];
             s[a] = role[dofs[a]] == DoFRole::bounded ?
                      std::max(0., ub[dofs[a]] - v[dofs[a]]) :
                      std::numeric_limits<double>::infinity();
           }
-        BoxQP(M).solve(g, s, c, at_bound);
+        coarse_qp.solve(g, s, c, at_bound);
         for (unsigned int a = 0; a < n; ++a)
           v[dofs[a]] = at_bound[a] ? ub[dofs[a]] : v[dofs[a]] + c[a];
       }
@@ -193,7 +306,7 @@ namespace FoslsContact
                           ub[i] - v[i] :
                           inf;
           }
-        update_coarse_operator(l, A, truncated);
+        update_coarse_operator(l, A, role, truncated, !linear);
         const auto &P = truncated_prolongation[l];
 
         A.vmult(residual, v);
@@ -202,10 +315,11 @@ namespace FoslsContact
         CoarseObstacles::project(parameters.projection,
                                  hierarchy.vertex_relations(l),
                                  hierarchy.face_relations(l),
+                                 face_scale[l],
                                  defect,
                                  ub_coarse);
         c = 0;
-        cycle(l - 1, galerkin[l - 1], r_coarse, ub_coarse, coarse_role, c);
+        cycle(l - 1, galerkin[l - 1], r_coarse, ub_coarse, coarse_role, c, linear);
 
         P.vmult(w, c);
         // keep the iterate feasible (a no-op when K_H is inside K_h)

@@ -20,7 +20,9 @@ namespace FoslsContact
    *   in 3D the centers of the coarse contact faces, which no edge covers,
    *   enter as in b);
    * - normal stress, per coarse contact face: the minimum over its sons
-   *   (eq. 30).
+   *   (eq. 30), divided by the face's entry of @p face_scale (>= 1: a
+   *   son that carries the flux of truncated brothers moves by that factor
+   *   times the coarse value, MonotoneMultigrid::reroute_flux()).
    */
   class CoarseObstacles
   {
@@ -28,6 +30,7 @@ namespace FoslsContact
     static void project(const Parameters::Solver::Projection projection,
                         const std::vector<VertexRelation> &  vertices,
                         const std::vector<FaceRelation> &    faces,
+                        const std::vector<double> &          face_scale,
                         const Vector<double> &               fine_defect,
                         Vector<double> &                     coarse_obstacle);
   };

@@ -1,0 +1,33 @@
+#!/usr/bin/env python3
+# The paper's plain monotone cycle (Solver/Krylov steps = 0) converges where
+# it used to stall (fixed by rerouting the flux of partly truncated coarse
+# contact faces, MonotoneMultigrid::reroute_flux):
+#  - the half disc (prm/hertz.prm, 2 levels, Grading = 1, the paper's
+#    two-level experiment): was rate 0.9999 per cycle, J 19% above the
+#    active set solver's after 300 cycles; now 13 cycles;
+#  - the square (4 levels) from a zero start: was J = 7.9e-5 vs 2.5e-7
+#    after 300 cycles.
+# Checks: converged within 100 cycles, force equal to the active set
+# solver's to 1e-6, J never increased.
+import sys
+import os
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from fosls_runs import Runner, check, finish, relative_difference
+
+R = Runner(sys.argv)
+for label, prm, scene in [
+        ("half disc, 2 levels", "prm/hertz.prm", ["Geometry/Levels=2"]),
+        ("square, zero start", "prm/square.prm",
+         ["Geometry/Levels=4", "Solver/Initial guess=zero"])]:
+    reference = R.run(prm, scene + ["Solver/Type=active set"], "reference")
+    run = R.run(prm, scene + ["Solver/Krylov steps=0",
+                              "Solver/Max iterations=100"], "plain_cycle")
+    check(run.ok() and run["converged"] is True,
+          label + ": converged within 100 cycles")
+    check(relative_difference(run["contact_force"],
+                              reference["contact_force"]) <= 1e-6,
+          label + ": |F - F_ref| / |F_ref| <= 1e-6")
+    check(run.ok() and run["energy_increases"] == 0,
+          label + ": J never increased")
+finish()

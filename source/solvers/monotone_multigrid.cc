@@ -9,8 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <limits>
+#include <map>
 
 namespace FoslsContact
 {
@@ -185,9 +185,10 @@ namespace FoslsContact
             for (const auto &[son, value] : d)
               rhs[a] -= A.el(local[a], son) * value;
           }
-        FullMatrix<double> inverse(n, n);
-        inverse.invert(A_local);
-        inverse.vmult(e, rhs);
+        // gauss_jordan pivots (FullMatrix::invert uses cofactor formulas for
+        // n <= 4, see BoxQP)
+        A_local.gauss_jordan();
+        A_local.vmult(e, rhs);
         for (unsigned int a = 0; a < n; ++a)
           Pt.add(local[a], j, e[a]);
       }

@@ -246,3 +246,20 @@ def check_flat_contact_run(run, max_iterations, n_contact_vertices):
     check(len(rows) == n_contact_vertices
           and all(r[-1].strip() == "1" for r in rows),
           "all %d bottom vertices in contact" % n_contact_vertices)
+
+
+def check_plain_cycle(runner, label, prm, scene):
+    """Run the paper's plain cycle (Krylov steps = 0, at most 100 cycles)
+    and the active set solver on one scene; check that the cycle converged
+    to the active set solver's force (1e-6 relative). Returns the run."""
+    reference = runner.run(prm, scene + ["Solver/Type=active set"],
+                           "reference")
+    run = runner.run(prm, scene + ["Solver/Krylov steps=0",
+                                   "Solver/Max iterations=100"],
+                     "plain_cycle")
+    check(run.ok() and run["converged"] is True,
+          label + ": converged within 100 cycles")
+    check(relative_difference(run["contact_force"],
+                              reference["contact_force"]) <= 1e-6,
+          label + ": |F - F_ref| / |F_ref| <= 1e-6")
+    return run

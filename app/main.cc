@@ -10,6 +10,7 @@
  * is written.
  */
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
@@ -96,7 +97,10 @@ int
 main(int argc, char *argv[])
 {
   using namespace FoslsContact;
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // threads: as many as cores (or DEAL_II_NUM_THREADS) until the scene's
+  // Solver/Threads says otherwise
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv,
+                                               dealii::numbers::invalid_unsigned_int);
   dealii::deal_II_exceptions::disable_abort_on_exception();
   dealii::deal_II_exceptions::suppress_stacktrace_in_exceptions();
 
@@ -160,6 +164,9 @@ main(int argc, char *argv[])
       where = file;
       Parameters::AllParameters parameters;
       parameters.parse_parameters(prm);
+
+      if (parameters.solver.threads > 0)
+        dealii::MultithreadInfo::set_thread_limit(parameters.solver.threads);
 
       std::ostringstream used;
       prm.print_parameters(used, dealii::ParameterHandler::PRM);

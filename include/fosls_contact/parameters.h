@@ -150,6 +150,8 @@ namespace FoslsContact
       InitialGuess initial_guess       = InitialGuess::coarse_solution;
       unsigned int definiteness_max_dofs = 20000;
       unsigned int krylov_steps          = 10;
+      /** 0: as many threads as cores (or DEAL_II_NUM_THREADS). */
+      unsigned int threads               = 0;
 
       static void declare_parameters(ParameterHandler &prm);
       void        parse_parameters(ParameterHandler &prm);

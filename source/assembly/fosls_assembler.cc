@@ -1,4 +1,8 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/work_stream.h>
+
+#include <exception>
+#include <mutex>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 
@@ -31,28 +35,93 @@ namespace FoslsContact
   }
 
 
+  namespace
+  {
+    /** Per-thread evaluators and work arrays of the cell loop. */
+    template <int dim>
+    struct AssemblyScratch
+    {
+      AssemblyScratch(const Mapping<dim> &      mapping,
+                      const FiniteElement<dim> &fe,
+                      const Quadrature<dim> &   quadrature,
+                      const Quadrature<dim - 1> &face_quadrature)
+        : fe_values(mapping,
+                    fe,
+                    quadrature,
+                    update_values | update_gradients | update_quadrature_points |
+                      update_JxW_values)
+        , fe_face(mapping,
+                  fe,
+                  face_quadrature,
+                  update_values | update_normal_vectors |
+                    update_quadrature_points | update_JxW_values)
+        , residual(fe.n_dofs_per_cell())
+        , divergence(fe.n_dofs_per_cell())
+        , un(fe.n_dofs_per_cell())
+        , sn(fe.n_dofs_per_cell())
+        , f(dim)
+      {}
+
+      AssemblyScratch(const AssemblyScratch &other)
+        : fe_values(other.fe_values.get_mapping(),
+                    other.fe_values.get_fe(),
+                    other.fe_values.get_quadrature(),
+                    other.fe_values.get_update_flags())
+        , fe_face(other.fe_face.get_mapping(),
+                  other.fe_face.get_fe(),
+                  other.fe_face.get_quadrature(),
+                  other.fe_face.get_update_flags())
+        , residual(other.residual.size())
+        , divergence(other.divergence.size())
+        , un(other.un.size())
+        , sn(other.sn.size())
+        , f(dim)
+      {}
+
+      FEValues<dim>               fe_values;
+      FEFaceValues<dim>           fe_face;
+      std::vector<Tensor<2, dim>> residual; // A sigma_i - eps(u_i)
+      std::vector<Tensor<1, dim>> divergence;
+      std::vector<double>         un, sn;
+      Vector<double>              f;
+    };
+
+    /** What one cell adds to the functional (already rotated). */
+    struct AssemblyCopy
+    {
+      explicit AssemblyCopy(const unsigned int n)
+        : k_eq(n, n)
+        , k_const(n, n)
+        , k_compl(n, n)
+        , k_total(n, n)
+        , r_eq(n)
+        , r_compl(n)
+        , r_total(n)
+        , dofs(n)
+      {}
+
+      FullMatrix<double>                   k_eq, k_const, k_compl, k_total;
+      Vector<double>                       r_eq, r_compl, r_total;
+      std::vector<types::global_dof_index> dofs;
+      double                               constant_eq     = 0;
+      bool                                 touches_contact = false;
+      bool                                 valid           = false;
+    };
+  } // namespace
+
+
   template <int dim>
   void
   FoslsAssembler<dim>::assemble(const unsigned int level, ConstrainedQP &qp) const
   {
-    const auto &fe     = discretization.get_fe();
-    const auto &scene  = discretization.get_scene();
-    const auto &data   = discretization.level(level);
-    const bool  body   = scene.has_body_force();
+    const auto &fe      = discretization.get_fe();
+    const auto &scene   = discretization.get_scene();
+    const auto &data    = discretization.level(level);
+    const bool  body    = scene.has_body_force();
     const bool  contact = scene.has_contact();
 
     const QGauss<dim>     quadrature(3);
     const QGauss<dim - 1> face_quadrature(3);
-    FEValues<dim>         fe_values(discretization.get_mapping(),
-                            fe,
-                            quadrature,
-                            update_values | update_gradients |
-                              update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim> fe_face(discretization.get_mapping(),
-                              fe,
-                              face_quadrature,
-                              update_values | update_normal_vectors |
-                                update_quadrature_points | update_JxW_values);
 
     // One Vector extractor per stress row: the Tensor<2> extractor's
     // divergence is zero for these non-primitive RT components on
@@ -63,176 +132,218 @@ namespace FoslsContact
       row.emplace_back(dim + m * dim);
 
     const unsigned int n = fe.n_dofs_per_cell();
-    FullMatrix<double> k_eq(n, n), k_const(n, n), k_compl(n, n), k_total(n, n);
-    Vector<double>     r_eq(n), r_compl(n), r_total(n);
-    std::vector<types::global_dof_index> dofs(n);
-
-    std::vector<Tensor<2, dim>> residual(n); // A sigma_i - eps(u_i)
-    std::vector<Tensor<1, dim>> divergence(n);
-    std::vector<Tensor<1, dim>> u_value(n);
-    std::vector<Tensor<2, dim>> sigma_value(n);
-    Vector<double>              f(dim);
-
     const double c_eq = weights.c_eq, c_const = weights.c_const,
                  c_compl = weights.c_compl;
 
-    for (const auto &cell : discretization.get_dof_handler()
-                              .mg_cell_iterators_on_level(level))
-      {
-        k_eq    = 0;
-        k_const = 0;
-        k_compl = 0;
-        r_eq    = 0;
-        r_compl = 0;
-        fe_values.reinit(cell);
+    using Iterator = typename DoFHandler<dim>::level_cell_iterator;
 
-        for (unsigned int q = 0; q < quadrature.size(); ++q)
-          {
-            const double JxW = fe_values.JxW(q);
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                Tensor<2, dim> sigma;
-                for (unsigned int m = 0; m < dim; ++m)
-                  {
-                    const Tensor<1, dim> r = fe_values[row[m]].value(i, q);
-                    for (unsigned int k = 0; k < dim; ++k)
-                      sigma[m][k] = r[k];
-                    divergence[i][m] = fe_values[row[m]].divergence(i, q);
-                  }
-                const Tensor<2, dim> eps =
-                  fe_values[displacement].symmetric_gradient(i, q);
-                residual[i] =
-                  compliance(sigma, material.mu, material.lambda) - eps;
-              }
-            for (unsigned int i = 0; i < n; ++i)
-              for (unsigned int j = 0; j <= i; ++j)
-                {
-                  k_eq(i, j) += c_eq * (divergence[i] * divergence[j]) * JxW;
-                  k_const(i, j) +=
-                    c_const * scalar_product(residual[i], residual[j]) * JxW;
-                }
-            if (body)
-              {
-                scene.body_force().vector_value(fe_values.quadrature_point(q), f);
-                Tensor<1, dim> ft;
-                for (unsigned int d = 0; d < dim; ++d)
-                  ft[d] = f[d];
-                for (unsigned int i = 0; i < n; ++i)
-                  r_eq(i) -= c_eq * (ft * divergence[i]) * JxW;
-                qp.constant_eq += c_eq * (ft * ft) * JxW;
-              }
-          }
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = i + 1; j < n; ++j)
+    // The cell terms, in parallel (WorkStream); the copier adds them to
+    // the global matrices one cell after the other in cell order, so the
+    // result does not depend on the number of threads.
+    auto assemble_cell = [&](const Iterator &cell, AssemblyScratch<dim> &scratch, AssemblyCopy &copy) {
+      auto &fe_values = scratch.fe_values;
+      auto &k_eq = copy.k_eq, &k_const = copy.k_const, &k_compl = copy.k_compl;
+      auto &r_eq = copy.r_eq, &r_compl = copy.r_compl;
+      k_eq    = 0;
+      k_const = 0;
+      k_compl = 0;
+      r_eq    = 0;
+      r_compl = 0;
+      copy.constant_eq = 0;
+      fe_values.reinit(cell);
+
+      auto &residual   = scratch.residual;
+      auto &divergence = scratch.divergence;
+      for (unsigned int q = 0; q < quadrature.size(); ++q)
+        {
+          const double JxW = fe_values.JxW(q);
+          for (unsigned int i = 0; i < n; ++i)
             {
-              k_eq(i, j)    = k_eq(j, i);
-              k_const(i, j) = k_const(j, i);
+              Tensor<2, dim> sigma;
+              for (unsigned int m = 0; m < dim; ++m)
+                {
+                  const Tensor<1, dim> r = fe_values[row[m]].value(i, q);
+                  for (unsigned int k = 0; k < dim; ++k)
+                    sigma[m][k] = r[k];
+                  divergence[i][m] = fe_values[row[m]].divergence(i, q);
+                }
+              const Tensor<2, dim> eps =
+                fe_values[displacement].symmetric_gradient(i, q);
+              residual[i] = compliance(sigma, material.mu, material.lambda) - eps;
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j <= i; ++j)
+              {
+                k_eq(i, j) += c_eq * (divergence[i] * divergence[j]) * JxW;
+                k_const(i, j) +=
+                  c_const * scalar_product(residual[i], residual[j]) * JxW;
+              }
+          if (body)
+            {
+              scene.body_force().vector_value(fe_values.quadrature_point(q), scratch.f);
+              Tensor<1, dim> ft;
+              for (unsigned int d = 0; d < dim; ++d)
+                ft[d] = scratch.f[d];
+              for (unsigned int i = 0; i < n; ++i)
+                r_eq(i) -= c_eq * (ft * divergence[i]) * JxW;
+              copy.constant_eq += c_eq * (ft * ft) * JxW;
+            }
+        }
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = i + 1; j < n; ++j)
+          {
+            k_eq(i, j)    = k_eq(j, i);
+            k_const(i, j) = k_const(j, i);
+          }
+
+      // Complementarity term on Gamma_C, symmetrized:
+      // C_compl/2 [(u_i.n)(sigma_j n_b.n) + (u_j.n)(sigma_i n_b.n)].
+      copy.touches_contact = false;
+      if (contact)
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f) && scene.is_contact(cell->face(f)->boundary_id()))
+            {
+              copy.touches_contact = true;
+              auto &fe_face        = scratch.fe_face;
+              fe_face.reinit(cell, f);
+              for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                {
+                  const Point<dim>     p   = fe_face.quadrature_point(q);
+                  const Tensor<1, dim> n_o = scene.obstacle_normal(p);
+                  const Tensor<1, dim> n_b = fe_face.normal_vector(q);
+                  const double         g   = scene.gap().value(p);
+                  const double         JxW = fe_face.JxW(q);
+                  auto &               un  = scratch.un;
+                  auto &               sn  = scratch.sn;
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      un[i] = fe_face[displacement].value(i, q) * n_o;
+                      Tensor<1, dim> traction;
+                      for (unsigned int m = 0; m < dim; ++m)
+                        traction[m] = fe_face[row[m]].value(i, q) * n_b;
+                      sn[i] = traction * n_o;
+                    }
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      for (unsigned int j = 0; j < n; ++j)
+                        k_compl(i, j) += 0.5 * c_compl * (un[i] * sn[j] + un[j] * sn[i]) * JxW;
+                      r_compl(i) += 0.5 * c_compl * g * sn[i] * JxW;
+                    }
+                }
             }
 
-        // Complementarity term on Gamma_C, symmetrized:
-        // C_compl/2 [(u_i.n)(sigma_j n_b.n) + (u_j.n)(sigma_i n_b.n)].
-        bool touches_contact = false;
-        if (contact)
-          for (const unsigned int f : cell->face_indices())
-            if (cell->at_boundary(f) &&
-                scene.is_contact(cell->face(f)->boundary_id()))
-              {
-                touches_contact = true;
-                fe_face.reinit(cell, f);
-                for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-                  {
-                    const Point<dim>     p   = fe_face.quadrature_point(q);
-                    const Tensor<1, dim> n_o = scene.obstacle_normal(p);
-                    const Tensor<1, dim> n_b = fe_face.normal_vector(q);
-                    const double         g   = scene.gap().value(p);
-                    const double         JxW = fe_face.JxW(q);
-                    std::vector<double>  un(n), sn(n);
-                    for (unsigned int i = 0; i < n; ++i)
-                      {
-                        un[i] = fe_face[displacement].value(i, q) * n_o;
-                        Tensor<1, dim> traction;
-                        for (unsigned int m = 0; m < dim; ++m)
-                          traction[m] = fe_face[row[m]].value(i, q) * n_b;
-                        sn[i] = traction * n_o;
-                      }
-                    for (unsigned int i = 0; i < n; ++i)
-                      {
-                        for (unsigned int j = 0; j < n; ++j)
-                          k_compl(i, j) +=
-                            0.5 * c_compl * (un[i] * sn[j] + un[j] * sn[i]) * JxW;
-                        r_compl(i) += 0.5 * c_compl * g * sn[i] * JxW;
-                      }
-                  }
-              }
+      auto &dofs = copy.dofs;
+      cell->get_mg_dof_indices(dofs);
 
-        cell->get_mg_dof_indices(dofs);
+      // Change of basis R^T K R for DoFs in rotation blocks (section 4.3).
+      bool rotated = false;
+      for (unsigned int i = 0; i < n; ++i)
+        rotated |= data.rotation_of_dof[dofs[i]] != numbers::invalid_unsigned_int;
+      if (rotated)
+        {
+          FullMatrix<double> R(n, n), tmp(n, n);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const unsigned int b = data.rotation_of_dof[dofs[i]];
+              if (b == numbers::invalid_unsigned_int)
+                {
+                  R(i, i) = 1.;
+                  continue;
+                }
+              const auto &       block = data.rotations[b];
+              const unsigned int ki =
+                std::find(block.dofs.begin(), block.dofs.end(), dofs[i]) -
+                block.dofs.begin();
+              for (unsigned int j = 0; j < n; ++j)
+                {
+                  const auto kj = std::find(block.dofs.begin(), block.dofs.end(), dofs[j]);
+                  if (kj != block.dofs.end())
+                    R(i, j) = block.matrix(ki, kj - block.dofs.begin());
+                }
+            }
+          Vector<double> tmp_v(n);
+          for (FullMatrix<double> *k : {&k_eq, &k_const, &k_compl})
+            {
+              tmp = 0;
+              tmp.triple_product(*k, R, R, true, false);
+              *k = tmp;
+            }
+          for (Vector<double> *r : {&r_eq, &r_compl})
+            {
+              R.Tvmult(tmp_v, *r);
+              *r = tmp_v;
+            }
+        }
 
-        // Change of basis R^T K R for DoFs in rotation blocks (section 4.3).
-        bool rotated = false;
-        for (unsigned int i = 0; i < n; ++i)
-          rotated |= data.rotation_of_dof[dofs[i]] != numbers::invalid_unsigned_int;
-        if (rotated)
-          {
-            FullMatrix<double> R(n, n), tmp(n, n);
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                const unsigned int b = data.rotation_of_dof[dofs[i]];
-                if (b == numbers::invalid_unsigned_int)
-                  {
-                    R(i, i) = 1.;
-                    continue;
-                  }
-                const auto &block = data.rotations[b];
-                const unsigned int ki =
-                  std::find(block.dofs.begin(), block.dofs.end(), dofs[i]) -
-                  block.dofs.begin();
-                for (unsigned int j = 0; j < n; ++j)
-                  {
-                    const auto kj = std::find(block.dofs.begin(),
-                                              block.dofs.end(),
-                                              dofs[j]);
-                    if (kj != block.dofs.end())
-                      R(i, j) = block.matrix(ki, kj - block.dofs.begin());
-                  }
-              }
-            Vector<double> tmp_v(n);
-            for (FullMatrix<double> *k : {&k_eq, &k_const, &k_compl})
-              {
-                tmp = 0;
-                tmp.triple_product(*k, R, R, true, false);
-                *k = tmp;
-              }
-            for (Vector<double> *r : {&r_eq, &r_compl})
-              {
-                R.Tvmult(tmp_v, *r);
-                *r = tmp_v;
-              }
-          }
+      // J = 1/2 x^T A x - b^T x + c with A = 2 K and b = 2 r.
+      copy.k_total = 0;
+      copy.k_total.add(2., k_eq);
+      copy.k_total.add(2., k_const);
+      copy.r_total = 0;
+      copy.r_total.add(2., r_eq);
+      if (copy.touches_contact)
+        {
+          copy.k_total.add(2., k_compl);
+          copy.r_total.add(2., r_compl);
+        }
+    };
 
-        // J = 1/2 x^T A x - b^T x + c with A = 2 K and b = 2 r.
-        k_total = 0;
-        k_total.add(2., k_eq);
-        k_total.add(2., k_const);
-        r_total = 0;
-        r_total.add(2., r_eq);
-        qp.matrix_eq.add(dofs, dofs, k_eq);
-        if (touches_contact)
-          {
-            k_total.add(2., k_compl);
-            r_total.add(2., r_compl);
-            qp.matrix_compl.add(dofs, dofs, k_compl);
-            for (unsigned int i = 0; i < n; ++i)
-              qp.rhs_compl(dofs[i]) += 2. * r_compl(i);
-          }
-        qp.matrix.add(dofs, dofs, k_total);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            qp.rhs(dofs[i]) += r_total(i);
-            qp.rhs_eq(dofs[i]) += 2. * r_eq(i);
-          }
-      }
+    // An exception in a WorkStream worker aborts the program (deal.II
+    // prints it and calls std::abort); a bad expression met here, e.g. an
+    // obstacle normal that evaluates to zero, must end in the usual
+    // one-line error instead. So the worker keeps the first message and
+    // the exception is thrown after the loop.
+    std::mutex         error_mutex;
+    std::exception_ptr error;
+    auto worker = [&](const Iterator &cell, AssemblyScratch<dim> &scratch, AssemblyCopy &copy) {
+      copy.valid = false;
+      try
+        {
+          assemble_cell(cell, scratch, copy);
+          copy.valid = true;
+        }
+      catch (...)
+        {
+          std::lock_guard<std::mutex> lock(error_mutex);
+          if (!error)
+            error = std::current_exception();
+        }
+    };
+    auto copier = [&](const AssemblyCopy &copy) {
+      if (!copy.valid)
+        return;
+      const auto &dofs = copy.dofs;
+      qp.matrix_eq.add(dofs, dofs, copy.k_eq);
+      if (copy.touches_contact)
+        {
+          qp.matrix_compl.add(dofs, dofs, copy.k_compl);
+          for (unsigned int i = 0; i < n; ++i)
+            qp.rhs_compl(dofs[i]) += 2. * copy.r_compl(i);
+        }
+      qp.matrix.add(dofs, dofs, copy.k_total);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          qp.rhs(dofs[i]) += copy.r_total(i);
+          qp.rhs_eq(dofs[i]) += 2. * copy.r_eq(i);
+        }
+      qp.constant_eq += copy.constant_eq;
+    };
+
+    const auto &dof_handler = discretization.get_dof_handler();
+    WorkStream::run(dof_handler.begin_mg(level),
+                    dof_handler.end_mg(level),
+                    worker,
+                    copier,
+                    AssemblyScratch<dim>(discretization.get_mapping(),
+                                         fe,
+                                         quadrature,
+                                         face_quadrature),
+                    AssemblyCopy(n));
+    if (error)
+      std::rethrow_exception(error);
     qp.matrix_eq *= 2.;
     qp.matrix_compl *= 2.;
+    qp.compress_part_matrices();
     qp.constant = qp.constant_eq;
   }
 

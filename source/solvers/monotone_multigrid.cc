@@ -3,6 +3,7 @@
 #include <fosls_contact/solvers/coarse_obstacles.h>
 #include <fosls_contact/solvers/monotone_multigrid.h>
 
+#include <deal.II/base/parallel.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
@@ -23,7 +24,6 @@ namespace FoslsContact
     , parameters(parameters)
     , finest(finest_level)
     , smoother(finest_level + 1)
-    , linear_smoother(finest_level + 1)
     , galerkin_sparsity(finest_level + 1)
     , product_sparsity(finest_level + 1)
     , prolongation_sparsity(finest_level + 1)
@@ -31,6 +31,8 @@ namespace FoslsContact
     , galerkin(finest_level + 1)
     , product(finest_level + 1)
     , truncated_prolongation(finest_level + 1)
+    , galerkin_product(finest_level + 1)
+    , scratch(finest_level + 1)
     , truncation_used(finest_level + 1)
     , version(finest_level + 1, 0)
     , version_used(finest_level + 1, numbers::invalid_unsigned_int)
@@ -64,6 +66,7 @@ namespace FoslsContact
         galerkin_dsp.compute_Tmmult_pattern(P, product_sparsity[l]);
         galerkin_sparsity[l - 1].copy_from(galerkin_dsp);
         truncated_prolongation[l].reinit(P);
+        galerkin_product[l].initialize(P);
         product[l].reinit(product_sparsity[l]);
         galerkin[l - 1].reinit(galerkin_sparsity[l - 1]);
       }
@@ -84,12 +87,28 @@ namespace FoslsContact
       return;
     const auto timing = section("Solve: Galerkin operators and patch setup");
 
-    SparseMatrix<double> &Pt = truncated_prolongation[l];
-    Pt = 0;
-    const SparseMatrix<double> &P = hierarchy.prolongation(l);
-    for (auto e = P.begin(); e != P.end(); ++e)
-      if (!truncated[e->row()])
-        Pt.set(e->row(), e->column(), e->value());
+    // P~: the rows of P at truncated DoFs are zero (its pattern holds P's
+    // and the entries flux rerouting may add; both sorted by column)
+    SparseMatrix<double> &      Pt = truncated_prolongation[l];
+    const SparseMatrix<double> &P  = hierarchy.prolongation(l);
+    parallel::apply_to_subranges(
+      types::global_dof_index(0),
+      types::global_dof_index(P.m()),
+      [&](const types::global_dof_index begin, const types::global_dof_index end) {
+        for (auto r = begin; r < end; ++r)
+          {
+            auto p = P.begin(r);
+            for (auto e = Pt.begin(r); e != Pt.end(r); ++e)
+              if (!truncated[r] && p != P.end(r) && p->column() == e->column())
+                {
+                  e->value() = p->value();
+                  ++p;
+                }
+              else
+                e->value() = 0.;
+          }
+      },
+      1000);
     std::vector<bool> removed(P.n(), false);
     if (reroute)
       reroute_flux(l, A, role, truncated, removed);
@@ -102,12 +121,12 @@ namespace FoslsContact
             if (truncated[son])
               removed[face.coarse_dof] = true;
       }
-    for (auto e = Pt.begin(); e != Pt.end(); ++e)
-      if (removed[e->column()])
-        e->value() = 0;
+    if (std::find(removed.begin(), removed.end(), true) != removed.end())
+      for (auto e = Pt.begin(); e != Pt.end(); ++e)
+        if (removed[e->column()])
+          e->value() = 0;
 
-    A.mmult(product[l], Pt, Vector<double>(), false);
-    Pt.Tmmult(galerkin[l - 1], product[l], Vector<double>(), false);
+    galerkin_product[l].compute(A, Pt, product[l], galerkin[l - 1]);
     truncation_used[l] = truncated;
     version_used[l]    = version[l];
     reroute_used[l]    = reroute;
@@ -269,14 +288,15 @@ namespace FoslsContact
                                 Vector<double> &            v,
                                 const bool                  linear)
   {
-    PatchSmoother &smoother =
-      (linear && l == finest) ? this->linear_smoother : this->smoother;
     if (l == 0)
       {
         coarse_solve(A, r, ub, role, v);
         return;
       }
 
+    // the finest level of the linear cycle relaxes with the linear roles
+    // (on coarser levels the truncation takes care of them)
+    smoother.use_linear_roles(l, linear && l == finest);
     smoother.set_obstacles(l, ub);
     smoother.set_backward(false);
     smoother.set_steps(parameters.pre_smoothing);
@@ -285,14 +305,42 @@ namespace FoslsContact
       smoother.smooth(l, v, r);
     }
 
-    const double       inf     = std::numeric_limits<double>::infinity();
+    const double       inf         = std::numeric_limits<double>::infinity();
     const auto &       coarse_role = hierarchy.level(l - 1).role;
-    const unsigned int visits  = (l == 1 ? 1 : parameters.cycle_gamma);
-    const auto         n       = v.size();
-    std::vector<bool>  truncated(n);
-    Vector<double>     defect(n), residual(n), w(n), Aw(n);
-    Vector<double>     r_coarse(hierarchy.level(l - 1).n_dofs),
-      ub_coarse(hierarchy.level(l - 1).n_dofs), c(hierarchy.level(l - 1).n_dofs);
+    const unsigned int visits      = (l == 1 ? 1 : parameters.cycle_gamma);
+    const auto         n           = v.size();
+    // the work vectors of this level (a level is never visited twice at
+    // once, and allocating them per visit showed up as page faults)
+    Scratch &          work        = scratch[l];
+    if (work.residual.size() != n)
+      {
+        const auto n_coarse = hierarchy.level(l - 1).n_dofs;
+        work.truncated.resize(n);
+        work.defect.reinit(n);
+        work.residual.reinit(n);
+        work.w.reinit(n);
+        work.r_coarse.reinit(n_coarse);
+        work.ub_coarse.reinit(n_coarse);
+        work.c.reinit(n_coarse);
+        work.Ac.reinit(n_coarse);
+      }
+    if (work.operator_version != operator_version(l, A))
+      {
+        // DoFs whose diagonal is zero are switched off by the truncation
+        // of the finer level; the operator of a level changes only with it
+        work.switched_off.resize(n);
+        for (types::global_dof_index i = 0; i < n; ++i)
+          work.switched_off[i] = A.diag_element(i) <= 0;
+        work.operator_version = operator_version(l, A);
+      }
+    auto &truncated = work.truncated;
+    auto &defect    = work.defect;
+    auto &residual  = work.residual;
+    auto &w         = work.w;
+    auto &r_coarse  = work.r_coarse;
+    auto &ub_coarse = work.ub_coarse;
+    auto &c         = work.c;
+    auto &Ac        = work.Ac;
 
     for (unsigned int visit = 0; visit < visits; ++visit)
       {
@@ -301,8 +349,7 @@ namespace FoslsContact
         for (types::global_dof_index i = 0; i < n; ++i)
           {
             const bool active = role[i] == DoFRole::bounded && v[i] >= ub[i];
-            truncated[i] = role[i] == DoFRole::fixed || active ||
-                           A.diag_element(i) <= 0;
+            truncated[i] = role[i] == DoFRole::fixed || active || work.switched_off[i];
             defect[i] = (role[i] == DoFRole::bounded && !truncated[i]) ?
                           ub[i] - v[i] :
                           inf;
@@ -332,9 +379,12 @@ namespace FoslsContact
         if (alpha < 1.)
           ++n_dampings;
 
-        // the change of Q_l: -alpha w.residual + alpha^2/2 w.A w
-        A.vmult(Aw, w);
-        const double wr = w * residual, wAw = w * Aw;
+        // the change of Q_l: -alpha w.residual + alpha^2/2 w.A w, with
+        // w = P~ c: w.residual = c.r_coarse and w.A w = c.A_{l-1} c (the
+        // Galerkin product), on the coarse level instead of a product with
+        // the fine matrix
+        galerkin[l - 1].vmult(Ac, c);
+        const double wr = c * r_coarse, wAw = c * Ac;
         const double change = -alpha * wr + 0.5 * alpha * alpha * wAw;
         if (change > 1e-10 * (std::abs(alpha * wr) + 0.5 * alpha * alpha * std::abs(wAw)) + 1e-300)
           ++n_increases;
@@ -344,6 +394,7 @@ namespace FoslsContact
             v[i] = ub[i]; // round-off of the damped step only
       }
 
+    smoother.use_linear_roles(l, linear && l == finest);
     smoother.set_obstacles(l, ub);
     smoother.set_backward(true);
     smoother.set_steps(parameters.post_smoothing);
@@ -351,6 +402,7 @@ namespace FoslsContact
       const auto timing = section("Solve: smoothing");
       smoother.smooth(l, v, r);
     }
+    smoother.use_linear_roles(l, false);
   }
 
 
@@ -361,17 +413,20 @@ namespace FoslsContact
     {
       const SparseMatrix<double> &A;
       const std::vector<DoFRole> &role;
+      const std::vector<types::global_dof_index> &fixed;
       void
       vmult(Vector<double> &dst, const Vector<double> &src) const
       {
-        Vector<double> s(src);
-        for (types::global_dof_index i = 0; i < s.size(); ++i)
-          if (role[i] == DoFRole::fixed)
-            s[i] = 0;
-        A.vmult(dst, s);
-        for (types::global_dof_index i = 0; i < s.size(); ++i)
-          if (role[i] == DoFRole::fixed)
-            dst[i] = 0;
+        A.vmult(dst, src);
+        // take out the columns of fixed DoFs (in CG they are zero anyway:
+        // the preconditioner never moves them); A is symmetric, so column
+        // i is row i
+        for (const auto i : fixed)
+          if (src[i] != 0.)
+            for (auto e = A.begin(i); e != A.end(i); ++e)
+              dst[e->column()] -= e->value() * src[i];
+        for (const auto i : fixed)
+          dst[i] = 0;
       }
     };
 
@@ -401,7 +456,10 @@ namespace FoslsContact
     smoother.set_obstacles(finest, qp.upper_bounds);
     smoother.set_backward(false);
     smoother.set_steps(parameters.pre_smoothing);
-    smoother.smooth(finest, x, qp.rhs);
+    {
+      const auto timing = section("Solve: smoothing");
+      smoother.smooth(finest, x, qp.rhs);
+    }
 
     // The linear problem keeps a DoF at its bound only where the bound
     // holds it: the multiplier mu_i = (b - A x)_i is positive. A DoF that
@@ -424,7 +482,11 @@ namespace FoslsContact
       ++n_cycles;
     };
     CyclePreconditioner<decltype(apply_cycle)> preconditioner{apply_cycle};
-    TruncatedOperator                           op{A, linear_role};
+    std::vector<types::global_dof_index> fixed;
+    for (types::global_dof_index i = 0; i < n; ++i)
+      if (linear_role[i] == DoFRole::fixed)
+        fixed.push_back(i);
+    TruncatedOperator op{A, linear_role, fixed};
 
     // The Newton direction d = increment + (solution of the linear problem
     // on the free DoFs). A free DoF that the direction would push past its
@@ -440,7 +502,8 @@ namespace FoslsContact
       {
         if (linear_role != linear_role_used)
           {
-            linear_smoother.initialize_level(finest, A, hierarchy.patches(finest), linear_role);
+            const auto timing = section("Solve: Galerkin operators and patch setup");
+            smoother.set_linear_roles(finest, linear_role);
             linear_role_used = linear_role;
           }
         rhs = residual;
@@ -470,6 +533,7 @@ namespace FoslsContact
               x[i] + d[i] > qp.upper_bounds[i])
             {
               linear_role[i] = DoFRole::fixed;
+              fixed.push_back(i);
               increment[i]   = qp.upper_bounds[i] - x[i];
               violated       = true;
             }
@@ -510,7 +574,10 @@ namespace FoslsContact
     smoother.set_obstacles(finest, qp.upper_bounds);
     smoother.set_backward(true);
     smoother.set_steps(parameters.post_smoothing);
-    smoother.smooth(finest, x, qp.rhs);
+    {
+      const auto timing = section("Solve: smoothing");
+      smoother.smooth(finest, x, qp.rhs);
+    }
     return n_cycles;
   }
 

@@ -1,5 +1,7 @@
 #include <fosls_contact/solvers/patch_smoother.h>
 
+#include <deal.II/base/parallel.h>
+
 #include <cmath>
 #include <limits>
 
@@ -11,6 +13,44 @@ namespace FoslsContact
   {}
 
 
+  std::vector<unsigned int>
+  PatchSmoother::color_patches(
+    const SparsityPattern &                                   sparsity,
+    const std::vector<std::vector<types::global_dof_index>> &patches)
+  {
+    // the patches of every DoF (compressed rows)
+    std::vector<unsigned int> first(sparsity.n_rows() + 1, 0);
+    for (const auto &patch : patches)
+      for (const auto dof : patch)
+        ++first[dof + 1];
+    for (unsigned int i = 0; i < sparsity.n_rows(); ++i)
+      first[i + 1] += first[i];
+    std::vector<unsigned int> owner(first.back());
+    {
+      std::vector<unsigned int> next(first.begin(), first.end() - 1);
+      for (unsigned int p = 0; p < patches.size(); ++p)
+        for (const auto dof : patches[p])
+          owner[next[dof]++] = p;
+    }
+
+    // patches are colored in order, so an earlier patch has its color
+    std::vector<unsigned int> color(patches.size(), 0);
+    for (unsigned int p = 0; p < patches.size(); ++p)
+      {
+        // patch q is coupled with p if p reads a DoF of q (the matrix is
+        // symmetric, so then q reads a DoF of p as well)
+        unsigned int c = 0;
+        for (const auto dof : patches[p])
+          for (auto e = sparsity.begin(dof); e != sparsity.end(dof); ++e)
+            for (unsigned int k = first[e->column()]; k < first[e->column() + 1]; ++k)
+              if (owner[k] < p)
+                c = std::max(c, color[owner[k]] + 1);
+        color[p] = c;
+      }
+    return color;
+  }
+
+
   void
   PatchSmoother::initialize_level(
     const unsigned int                                       l,
@@ -19,51 +59,124 @@ namespace FoslsContact
     const std::vector<DoFRole> &                             role)
   {
     Level &level = levels[l];
+    // the coloring depends only on the pattern, which is fixed per level
+    std::vector<unsigned int> patch_color = std::move(level.patch_color);
+    if (patch_color.size() != patches.size())
+      patch_color = color_patches(matrix.get_sparsity_pattern(), patches);
     level = Level();
+    level.patch_color = std::move(patch_color);
+    const unsigned int n_colors =
+      patches.empty() ? 0 :
+                        *std::max_element(level.patch_color.begin(), level.patch_color.end()) + 1;
+
+    // Layout (serial, cheap): the patches in color order, each with the
+    // DoFs that can move (not fixed, not switched off by a zero diagonal),
+    // and the offsets of its DoFs, inverse and rows in the packed arrays.
+    std::vector<std::vector<unsigned int>> by_color(n_colors);
+    for (unsigned int p = 0; p < patches.size(); ++p)
+      by_color[level.patch_color[p]].push_back(p);
+    auto row_length = [&](const types::global_dof_index dof) {
+      std::size_t length = 0;
+      for (auto e = matrix.begin(dof); e != matrix.end(dof); ++e)
+        length += (e->value() != 0.);
+      return length;
+    };
     level.start.push_back(0);
     level.inverse_start.push_back(0);
     level.row_start.push_back(0);
-    std::vector<types::global_dof_index> dofs;
-    for (const auto &all_dofs : patches)
+    level.color_start.push_back(0);
+    unsigned int n_qps = 0;
+    for (const auto &color : by_color)
       {
-        dofs.clear();
-        bool any_bounded = false;
-        for (const auto dof : all_dofs)
-          if (role[dof] != DoFRole::fixed && matrix.diag_element(dof) > 0)
-            {
-              dofs.push_back(dof);
-              any_bounded |= role[dof] == DoFRole::bounded;
-            }
-        if (dofs.empty())
-          continue;
-        const unsigned int n = dofs.size();
-        FullMatrix<double> M(n, n);
-        for (unsigned int a = 0; a < n; ++a)
-          for (unsigned int b = 0; b < n; ++b)
-            M(a, b) = matrix.el(dofs[a], dofs[b]);
-        BoxQP qp(M);
-        for (unsigned int a = 0; a < n; ++a)
-          for (unsigned int b = 0; b < n; ++b)
-            level.inverse.push_back(qp.inverse_entry(a, b));
-        for (const auto dof : dofs)
+        for (const unsigned int p : color)
           {
-            level.dofs.push_back(dof);
-            level.bounded.push_back(role[dof] == DoFRole::bounded);
-            for (auto e = matrix.begin(dof); e != matrix.end(dof); ++e)
-              if (e->value() != 0.)
+            bool         any_bounded = false;
+            unsigned int n           = 0;
+            for (const auto dof : patches[p])
+              if (role[dof] != DoFRole::fixed && matrix.diag_element(dof) > 0)
                 {
-                  level.columns.push_back(e->column());
-                  level.values.push_back(e->value());
+                  level.dofs.push_back(dof);
+                  level.bounded.push_back(role[dof] == DoFRole::bounded);
+                  level.row_start.push_back(level.row_start.back() + row_length(dof));
+                  any_bounded |= role[dof] == DoFRole::bounded;
+                  ++n;
                 }
-            level.row_start.push_back(level.values.size());
+            if (n == 0)
+              continue;
+            level.box_qp.push_back(any_bounded ? n_qps++ : numbers::invalid_unsigned_int);
+            level.start.push_back(level.dofs.size());
+            level.inverse_start.push_back(level.inverse_start.back() + n * n);
           }
-        level.box_qp.push_back(any_bounded ? level.qps.size() :
-                                             numbers::invalid_unsigned_int);
-        if (any_bounded)
-          level.qps.push_back(std::move(qp));
-        level.start.push_back(level.dofs.size());
-        level.inverse_start.push_back(level.inverse.size());
+        level.color_start.push_back(level.box_qp.size());
       }
+
+    // Values (in parallel, patch by patch): the inverse of the patch
+    // matrix, a BoxQP for patches with a bounded DoF, and the rows.
+    level.inverse.resize(level.inverse_start.back());
+    level.columns.resize(level.row_start.back());
+    level.values.resize(level.row_start.back());
+    level.qps.resize(n_qps);
+    parallel::apply_to_subranges(
+      0u,
+      static_cast<unsigned int>(level.box_qp.size()),
+      [&](const unsigned int begin, const unsigned int end) {
+        for (unsigned int k = begin; k < end; ++k)
+          {
+            const auto *       dofs = level.dofs.data() + level.start[k];
+            const unsigned int n    = level.start[k + 1] - level.start[k];
+            FullMatrix<double> M(n, n);
+            for (unsigned int a = 0; a < n; ++a)
+              for (unsigned int b = 0; b < n; ++b)
+                M(a, b) = matrix.el(dofs[a], dofs[b]);
+            BoxQP qp(M);
+            double *inverse = level.inverse.data() + level.inverse_start[k];
+            for (unsigned int a = 0; a < n; ++a)
+              for (unsigned int b = 0; b < n; ++b)
+                inverse[a * n + b] = qp.inverse_entry(a, b);
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                std::size_t j = level.row_start[level.start[k] + a];
+                for (auto e = matrix.begin(dofs[a]); e != matrix.end(dofs[a]); ++e)
+                  if (e->value() != 0.)
+                    {
+                      level.columns[j] = e->column();
+                      level.values[j]  = e->value();
+                      ++j;
+                    }
+              }
+            if (level.box_qp[k] != numbers::invalid_unsigned_int)
+              level.qps[level.box_qp[k]] = std::move(qp);
+          }
+      },
+      16);
+  }
+
+
+  void
+  PatchSmoother::set_linear_roles(const unsigned int l, const std::vector<DoFRole> &linear_role)
+  {
+    Level &level = levels[l];
+    level.linear_patch.resize(level.qps.size());
+    for (unsigned int k = 0; k < level.box_qp.size(); ++k)
+      if (level.box_qp[k] != numbers::invalid_unsigned_int)
+        {
+          const auto *       dofs  = level.dofs.data() + level.start[k];
+          const unsigned int n     = level.start[k + 1] - level.start[k];
+          const BoxQP &      qp    = level.qps[level.box_qp[k]];
+          auto &             patch = level.linear_patch[level.box_qp[k]];
+          patch.moving.clear();
+          for (unsigned int a = 0; a < n; ++a)
+            if (linear_role[dofs[a]] != DoFRole::fixed)
+              patch.moving.push_back(a);
+          const unsigned int m = patch.moving.size();
+          FullMatrix<double> M(m, m);
+          for (unsigned int a = 0; a < m; ++a)
+            for (unsigned int b = 0; b < m; ++b)
+              M(a, b) = qp.matrix_entry(patch.moving[a], patch.moving[b]);
+          if (m > 0)
+            M.gauss_jordan(); // pivots, as in BoxQP
+          patch.inverse.assign(M.begin(), M.end());
+        }
   }
 
 
@@ -75,69 +188,119 @@ namespace FoslsContact
 
 
   void
+  PatchSmoother::relax_patches(const Level &         level,
+                               const unsigned int    begin,
+                               const unsigned int    end,
+                               const bool            reverse,
+                               Vector<double> &      v,
+                               const Vector<double> &r) const
+  {
+    const auto &        ub  = *level.obstacles;
+    const double        inf = std::numeric_limits<double>::infinity();
+    std::vector<double> g, s, c;
+    std::vector<bool>   at_bound;
+    unsigned int        increases = 0;
+    for (unsigned int kk = begin; kk < end; ++kk)
+      {
+        const unsigned int k    = reverse ? begin + end - 1 - kk : kk;
+        const auto *       dofs = level.dofs.data() + level.start[k];
+        const unsigned int n    = level.start[k + 1] - level.start[k];
+        const double *     inv  = level.inverse.data() + level.inverse_start[k];
+        g.resize(n);
+        s.resize(n);
+        c.resize(n);
+        const bool linear_patch =
+          level.linear && level.box_qp[k] != numbers::invalid_unsigned_int;
+        for (unsigned int a = 0; a < n; ++a)
+          {
+            const auto          i      = dofs[a];
+            const std::size_t   first  = level.row_start[level.start[k] + a];
+            const std::size_t   last   = level.row_start[level.start[k] + a + 1];
+            const unsigned int *column = level.columns.data();
+            const double *      value  = level.values.data();
+            double              gi     = r[i];
+            for (std::size_t e = first; e < last; ++e)
+              gi -= value[e] * v[column[e]];
+            g[a] = gi;
+            s[a] = level.bounded[level.start[k] + a] ? std::max(0., ub[i] - v[i]) : inf;
+          }
+        if (linear_patch)
+          {
+            // the linear problem: the fixed DoFs stay, the others have no
+            // bound
+            const auto &       patch = level.linear_patch[level.box_qp[k]];
+            const unsigned int m     = patch.moving.size();
+            double             gc = 0, scale = 0;
+            for (unsigned int a = 0; a < m; ++a)
+              {
+                double ca = 0;
+                for (unsigned int b = 0; b < m; ++b)
+                  ca += patch.inverse[a * m + b] * g[patch.moving[b]];
+                c[a] = ca;
+                gc += g[patch.moving[a]] * ca;
+                scale += std::abs(g[patch.moving[a]] * ca);
+              }
+            for (unsigned int a = 0; a < m; ++a)
+              v[dofs[patch.moving[a]]] += c[a];
+            if (-0.5 * gc > 1e-10 * scale + 1e-300)
+              ++increases;
+            continue;
+          }
+        // the unconstrained patch minimizer c = M^{-1} g, and the change
+        // of the objective, 1/2 c^T M c - g^T c = -1/2 g^T c
+        bool   feasible = true;
+        double gc       = 0;
+        for (unsigned int a = 0; a < n; ++a)
+          {
+            double ca = 0;
+            for (unsigned int b = 0; b < n; ++b)
+              ca += inv[a * n + b] * g[b];
+            c[a] = ca;
+            gc += g[a] * ca;
+            feasible &= ca <= s[a];
+          }
+        double change = -0.5 * gc;
+        if (feasible)
+          at_bound.assign(n, false);
+        else
+          change = level.qps[level.box_qp[k]].solve(g.data(), s.data(), c.data(), at_bound);
+        double scale = 0;
+        for (unsigned int a = 0; a < n; ++a)
+          {
+            const auto i = dofs[a];
+            v[i]         = at_bound[a] ? ub[i] : v[i] + c[a];
+            scale += std::abs(g[a] * c[a]);
+          }
+        // exact minimization on the patch: the change is <= 0 up to
+        // round-off relative to its own terms
+        if (change > 1e-10 * scale + 1e-300)
+          ++increases;
+      }
+    if (increases > 0)
+      n_increases += increases;
+  }
+
+
+  void
   PatchSmoother::smooth(const unsigned int    l,
                         Vector<double> &      v,
                         const Vector<double> &r) const
   {
-    const Level &level = levels[l];
-    const auto & ub    = *level.obstacles;
-    const double inf   = std::numeric_limits<double>::infinity();
-    std::vector<double> g, s, c;
-    std::vector<bool>   at_bound;
-
-    const unsigned int n_patches = level.box_qp.size();
+    const Level &      level    = levels[l];
+    const unsigned int n_colors = level.color_start.size() - 1;
     for (unsigned int step = 0; step < steps; ++step)
-      for (unsigned int kk = 0; kk < n_patches; ++kk)
+      for (unsigned int cc = 0; cc < n_colors; ++cc)
         {
-          const unsigned int k     = backward ? n_patches - 1 - kk : kk;
-          const auto *       dofs  = level.dofs.data() + level.start[k];
-          const unsigned int n     = level.start[k + 1] - level.start[k];
-          const double *     inv   = level.inverse.data() + level.inverse_start[k];
-          g.resize(n);
-          s.resize(n);
-          c.resize(n);
-          for (unsigned int a = 0; a < n; ++a)
-            {
-              const auto         i     = dofs[a];
-              const std::size_t  first = level.row_start[level.start[k] + a];
-              const std::size_t  last  = level.row_start[level.start[k] + a + 1];
-              const unsigned int *column = level.columns.data();
-              const double *      value  = level.values.data();
-              double              gi     = r[i];
-              for (std::size_t e = first; e < last; ++e)
-                gi -= value[e] * v[column[e]];
-              g[a] = gi;
-              s[a] = level.bounded[level.start[k] + a] ? std::max(0., ub[i] - v[i]) : inf;
-            }
-          // the unconstrained patch minimizer c = M^{-1} g, and the change
-          // of the objective, 1/2 c^T M c - g^T c = -1/2 g^T c
-          bool   feasible = true;
-          double gc       = 0;
-          for (unsigned int a = 0; a < n; ++a)
-            {
-              double ca = 0;
-              for (unsigned int b = 0; b < n; ++b)
-                ca += inv[a * n + b] * g[b];
-              c[a] = ca;
-              gc += g[a] * ca;
-              feasible &= ca <= s[a];
-            }
-          double change = -0.5 * gc;
-          if (feasible)
-            at_bound.assign(n, false);
-          else
-            change = level.qps[level.box_qp[k]].solve(g.data(), s.data(), c.data(), at_bound);
-          double scale = 0;
-          for (unsigned int a = 0; a < n; ++a)
-            {
-              const auto i = dofs[a];
-              v[i] = at_bound[a] ? ub[i] : v[i] + c[a];
-              scale += std::abs(g[a] * c[a]);
-            }
-          // exact minimization on the patch: the change is <= 0 up to
-          // round-off relative to its own terms
-          if (change > 1e-10 * scale + 1e-300)
-            ++n_increases;
+          const unsigned int color = backward ? n_colors - 1 - cc : cc;
+          // the patches of one color are independent: any split among
+          // threads gives the same result
+          parallel::apply_to_subranges(
+            level.color_start[color],
+            level.color_start[color + 1],
+            [&](const unsigned int begin, const unsigned int end) {
+              relax_patches(level, begin, end, false, v, r);
+            },
+            64);
         }
   }
 

@@ -19,10 +19,16 @@
 # the constraint violation of every iterate <= 1e-14 (1e-12 of the push
 # 0.01; measured: exactly 0). All runs stop after at most 30 iterations
 # except the default from the coarse start, which must converge (KKT
-# residual < 1e-10; measured 3-4 iterations). The plain cycle does not
-# converge within 30 cycles on the tilted square and the half disc, nor
-# from a zero start (known problem, test bug_plain_cycle); the default
-# solver converges from a zero start in 4-5 iterations.
+# residual < 1e-10; measured 3-4 iterations). The plain cycle with
+# projection b must converge within 30 cycles (measured 11-13; before
+# session 4 it did not on the tilted square, the half disc and the squares
+# from a zero start, because the Galerkin operators were summed up over
+# truncation changes, see tests/unit/galerkin_product), except on the half
+# disc with 3 levels from a zero start: there it keeps 49 active DoFs
+# (the solution has 47) and creeps at a rate of 1.000 (J -1% per 10
+# cycles, measured over 300 cycles), the known weakness of the plain
+# cycle where an active DoF must be released. The default solver
+# converges from a zero start in 4-5 iterations.
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
@@ -53,6 +59,9 @@ for label, prm, settings in scenes:
                       + ["Solver/Krylov steps=0"], name + "_plain")
         describe(plain, "plain cycle")
         check_monotone_feasible(plain, "plain cycle")
+        if projection == "b" and label != "hertz zero start":
+            check(plain["converged"] is True,
+                  "plain cycle: converged within 30 cycles")
         if projection != "b":
             continue  # the default's Newton step uses no coarse obstacles
         default = R.run(prm, settings + p + (at_most_30 if from_zero else []),

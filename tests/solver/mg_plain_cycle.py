@@ -7,6 +7,14 @@
 #    active set solver's after 300 cycles; now 13 cycles;
 #  - the square (4 levels) from a zero start: was J = 7.9e-5 vs 2.5e-7
 #    after 300 cycles.
+#  - the square (5 levels) with C_compl = 0, a near-degenerate contact
+#    (corner multipliers 100x smaller than in the middle): was rate 0.995,
+#    "NOT converged after 100 iterations", J 0.1% above the optimum (test
+#    bug_plain_cycle, disabled). Cause found in session 4: deal.II's
+#    SparseMatrix::mmult/Tmmult add to their result, so every Galerkin
+#    operator after the first change of the truncation was the sum of all
+#    earlier ones (tests/unit/galerkin_product); with GalerkinProduct it
+#    converges.
 # Checks: converged within 100 cycles, force equal to the active set
 # solver's to 1e-6, J never increased.
 import sys
@@ -19,7 +27,9 @@ R = Runner(sys.argv)
 for label, prm, scene in [
         ("half disc, 2 levels", "prm/hertz.prm", ["Geometry/Levels=2"]),
         ("square, zero start", "prm/square.prm",
-         ["Geometry/Levels=4", "Solver/Initial guess=zero"])]:
+         ["Geometry/Levels=4", "Solver/Initial guess=zero"]),
+        ("square, C_compl = 0", "prm/square.prm",
+         ["Geometry/Levels=5", "Functional weights/C_compl=0"])]:
     run = check_plain_cycle(R, label, prm, scene)
     check(run.ok() and run["energy_increases"] == 0,
           label + ": J never increased")

@@ -85,11 +85,17 @@ namespace FoslsContact
     const std::string &name() const { return solver_name; }
 
   private:
+    /** Which DoFs are at their upper bound in @p x. */
+    std::vector<bool> current_active_set(const Vector<double> &x) const;
+
     const ConstrainedQP &         qp;
     const Parameters::Solver      parameters;
     const ConditionalOStream &    pcout;
     const std::string             solver_name;
     std::vector<IterationRecord>  history;
+    /** The active set of the last iterate, and the iteration it last changed. */
+    std::vector<bool>             active_set;
+    unsigned int                  active_set_changed_at  = 0;
     Timer                         timer;
     unsigned int                  n_energy_increases     = 0;
     unsigned int                  n_feasibility_dampings = 0;

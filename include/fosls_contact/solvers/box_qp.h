@@ -33,6 +33,12 @@ namespace FoslsContact
 
     unsigned int size() const { return matrix.m(); }
 
+    /** Entry (i, j) of M. */
+    double matrix_entry(const unsigned int i, const unsigned int j) const
+    {
+      return matrix(i, j);
+    }
+
     /** Entry (i, j) of the inverse of M. */
     double inverse_entry(const unsigned int i, const unsigned int j) const
     {

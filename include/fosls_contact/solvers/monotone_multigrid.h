@@ -8,6 +8,7 @@
 #include <fosls_contact/discretization/level_transfer.h>
 #include <fosls_contact/parameters.h>
 #include <fosls_contact/solvers/box_qp.h>
+#include <fosls_contact/solvers/galerkin_product.h>
 #include <fosls_contact/solvers/multilevel_hierarchy.h>
 #include <fosls_contact/solvers/patch_smoother.h>
 #include <fosls_contact/solvers/qp_solver.h>
@@ -79,8 +80,8 @@ namespace FoslsContact
     /**
      * One cycle on level @p l for Q_l with matrix @p A; @p v is updated.
      * With @p linear (the Newton step's preconditioner), the finest
-     * level's smoother is the one of the truncated linear problem
-     * (linear_smoother), and coarse faces with a truncated son are removed
+     * level is relaxed with the roles of the truncated linear problem
+     * (PatchSmoother::set_linear_roles), and coarse faces with a truncated son are removed
      * instead of rerouted.
      */
     void cycle(const unsigned int          l,
@@ -132,12 +133,28 @@ namespace FoslsContact
                       const std::vector<bool> &   truncated,
                       std::vector<bool> &         removed);
 
+    /** Work vectors of the cycle on one level (l: fine, l - 1: coarse). */
+    struct Scratch
+    {
+      std::vector<bool> truncated, switched_off;
+      Vector<double>    defect, residual, w;
+      Vector<double>    r_coarse, ub_coarse, c, Ac;
+      /** The operator switched_off was computed for. */
+      std::pair<const void *, unsigned int> operator_version{nullptr, 0};
+    };
+
+    /** Identifies the operator @p A of level @p l and its current values. */
+    std::pair<const void *, unsigned int>
+    operator_version(const unsigned int l, const SparseMatrix<double> &A) const
+    {
+      return {&A, version[l]};
+    }
+
     const MultilevelHierarchy<dim> hierarchy;
     const Parameters::Solver       parameters;
     const unsigned int             finest;
 
     PatchSmoother                                      smoother;
-    PatchSmoother                                      linear_smoother;
     std::vector<DoFRole>                               linear_role, linear_role_used;
     std::vector<SparsityPattern>                       galerkin_sparsity, product_sparsity;
     /** P's pattern plus the DoFs the flux rerouting may use (per level). */
@@ -145,6 +162,8 @@ namespace FoslsContact
     std::vector<std::vector<double>>                   face_scale;
     std::vector<SparseMatrix<double>>                  galerkin, product;
     std::vector<SparseMatrix<double>>                  truncated_prolongation;
+    std::vector<GalerkinProduct>                       galerkin_product;
+    std::vector<Scratch>                               scratch;
     std::vector<std::vector<bool>>                     truncation_used;
     std::vector<unsigned int>                          version, version_used;
     std::vector<bool>                                  reroute_used;

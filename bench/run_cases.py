@@ -102,6 +102,8 @@ SQUARE_CONFIGS = {
     "plainW": ({"Solver/Krylov steps": "0", "Solver/Cycle": "W",
                 "Solver/Pre smoothing": "3", "Solver/Post smoothing": "3"}, 6.0),
     "activeset": ({"Solver/Type": "active set"}, 8.0),
+    # the default solver on one thread (the others use all cores)
+    "default1t": ({"Solver/Threads": "1"}, 6.0),
 }
 
 
@@ -222,6 +224,9 @@ def main():
         for lam in ["1", "inf"]:
             square(config, lam, 9, last[(config, lam)])
     square("activeset", "1", 9, last[("activeset", "1")])
+    prev = None
+    for L in range(5, 10):
+        prev = square("default1t", "1", L, prev)
     log("done")
 
 

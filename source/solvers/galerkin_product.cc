@@ -30,11 +30,11 @@ namespace FoslsContact
   GalerkinProduct::compute(const SparseMatrix<double> &A,
                            const SparseMatrix<double> &P,
                            SparseMatrix<double> &      product,
-                           SparseMatrix<double> &      galerkin) const
+                           SparseMatrix<double> &      galerkin)
   {
     // the values of P in the order of its pattern (global_index)
     const SparsityPattern &P_pattern = P.get_sparsity_pattern();
-    std::vector<double>    P_values(P_pattern.n_nonzero_elements());
+    P_values.resize(P_pattern.n_nonzero_elements());
     parallel::apply_to_subranges(
       0u,
       static_cast<unsigned int>(P.m()),
@@ -97,5 +97,25 @@ namespace FoslsContact
           }
       },
       100);
+  }
+
+
+  void
+  GalerkinProduct::Tvmult(Vector<double> &dst, const Vector<double> &src) const
+  {
+    AssertDimension(dst.size(), n_coarse);
+    parallel::apply_to_subranges(
+      0u,
+      n_coarse,
+      [&](const unsigned int begin, const unsigned int end) {
+        for (unsigned int j = begin; j < end; ++j)
+          {
+            double sum = 0;
+            for (std::size_t k = transpose_start[j]; k < transpose_start[j + 1]; ++k)
+              sum += P_values[transpose_position[k]] * src[transpose_row[k]];
+            dst[j] = sum;
+          }
+      },
+      500);
   }
 } // namespace FoslsContact

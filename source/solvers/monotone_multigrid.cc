@@ -312,6 +312,7 @@ namespace FoslsContact
     // the work vectors of this level (a level is never visited twice at
     // once, and allocating them per visit showed up as page faults)
     Scratch &          work        = scratch[l];
+    auto &             defect      = work.defect;
     if (work.residual.size() != n)
       {
         const auto n_coarse = hierarchy.level(l - 1).n_dofs;
@@ -324,17 +325,27 @@ namespace FoslsContact
         work.c.reinit(n_coarse);
         work.Ac.reinit(n_coarse);
       }
-    if (work.operator_version != operator_version(l, A))
+    if (work.operator_version != operator_version(l, A) || work.role != role)
       {
-        // DoFs whose diagonal is zero are switched off by the truncation
-        // of the finer level; the operator of a level changes only with it
-        work.switched_off.resize(n);
+        // The part of the truncation that does not depend on the iterate:
+        // fixed DoFs, and DoFs whose diagonal is zero, switched off by the
+        // truncation of the finer level. It changes only with the
+        // operator (which changes only with that truncation) or the roles
+        // (those of the Newton step's linear problem), so a visit only
+        // looks at the bounded DoFs.
+        work.fixed_truncated.resize(n);
+        work.bounded.clear();
+        defect = std::numeric_limits<double>::infinity();
         for (types::global_dof_index i = 0; i < n; ++i)
-          work.switched_off[i] = A.diag_element(i) <= 0;
+          {
+            work.fixed_truncated[i] = role[i] == DoFRole::fixed || A.diag_element(i) <= 0;
+            if (role[i] == DoFRole::bounded && !work.fixed_truncated[i])
+              work.bounded.push_back(i);
+          }
         work.operator_version = operator_version(l, A);
+        work.role             = role;
       }
     auto &truncated = work.truncated;
-    auto &defect    = work.defect;
     auto &residual  = work.residual;
     auto &w         = work.w;
     auto &r_coarse  = work.r_coarse;
@@ -346,20 +357,18 @@ namespace FoslsContact
       {
         // Truncation (eq. 34): fixed, active and switched-off DoFs do not
         // move; their defect obstacle is +inf (eqs. 35-36).
-        for (types::global_dof_index i = 0; i < n; ++i)
+        truncated = work.fixed_truncated;
+        for (const auto i : work.bounded)
           {
-            const bool active = role[i] == DoFRole::bounded && v[i] >= ub[i];
-            truncated[i] = role[i] == DoFRole::fixed || active || work.switched_off[i];
-            defect[i] = (role[i] == DoFRole::bounded && !truncated[i]) ?
-                          ub[i] - v[i] :
-                          inf;
+            truncated[i] = v[i] >= ub[i]; // active
+            defect[i]    = truncated[i] ? inf : ub[i] - v[i];
           }
         update_coarse_operator(l, A, role, truncated, !linear);
         const auto &P = truncated_prolongation[l];
 
         A.vmult(residual, v);
         residual.sadd(-1., 1., r);
-        P.Tvmult(r_coarse, residual);
+        galerkin_product[l].Tvmult(r_coarse, residual);
         CoarseObstacles::project(parameters.projection,
                                  hierarchy.vertex_relations(l),
                                  hierarchy.face_relations(l),
@@ -372,9 +381,8 @@ namespace FoslsContact
         P.vmult(w, c);
         // keep the iterate feasible (a no-op when K_H is inside K_h)
         double alpha = 1.;
-        for (types::global_dof_index i = 0; i < n; ++i)
-          if (role[i] == DoFRole::bounded && !truncated[i] && w[i] > 0 &&
-              v[i] + w[i] > ub[i])
+        for (const auto i : work.bounded)
+          if (!truncated[i] && w[i] > 0 && v[i] + w[i] > ub[i])
             alpha = std::min(alpha, std::max(0., (ub[i] - v[i]) / w[i]));
         if (alpha < 1.)
           ++n_dampings;
@@ -389,8 +397,8 @@ namespace FoslsContact
         if (change > 1e-10 * (std::abs(alpha * wr) + 0.5 * alpha * alpha * std::abs(wAw)) + 1e-300)
           ++n_increases;
         v.add(alpha, w);
-        for (types::global_dof_index i = 0; i < n; ++i)
-          if (role[i] == DoFRole::bounded && v[i] > ub[i])
+        for (const auto i : work.bounded)
+          if (v[i] > ub[i])
             v[i] = ub[i]; // round-off of the damped step only
       }
 

@@ -3,6 +3,7 @@
 
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
 
 #include <vector>
 
@@ -38,9 +39,17 @@ namespace FoslsContact
     void compute(const SparseMatrix<double> &A,
                  const SparseMatrix<double> &P,
                  SparseMatrix<double> &      product,
-                 SparseMatrix<double> &      galerkin) const;
+                 SparseMatrix<double> &      galerkin);
+
+    /**
+     * dst = P^T src for the P of the last compute(), by columns of P in
+     * parallel (SparseMatrix::Tvmult is serial: it scatters into dst).
+     */
+    void Tvmult(Vector<double> &dst, const Vector<double> &src) const;
 
   private:
+    /** The values of the last P, in the order of its pattern. */
+    std::vector<double>       P_values;
     /** Column j of P: entries transpose_start[j] .. transpose_start[j+1]. */
     std::vector<std::size_t>  transpose_start;
     /** Row of each entry of a column, and its position in P's storage. */

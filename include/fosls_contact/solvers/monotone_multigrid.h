@@ -136,11 +136,16 @@ namespace FoslsContact
     /** Work vectors of the cycle on one level (l: fine, l - 1: coarse). */
     struct Scratch
     {
-      std::vector<bool> truncated, switched_off;
+      std::vector<bool> truncated;
       Vector<double>    defect, residual, w;
       Vector<double>    r_coarse, ub_coarse, c, Ac;
-      /** The operator switched_off was computed for. */
+      /** Fixed or switched off (zero diagonal): truncated in every visit. */
+      std::vector<bool> fixed_truncated;
+      /** The bounded DoFs that are not fixed_truncated. */
+      std::vector<types::global_dof_index> bounded;
+      /** The operator and roles fixed_truncated was computed for. */
       std::pair<const void *, unsigned int> operator_version{nullptr, 0};
+      std::vector<DoFRole>                  role;
     };
 
     /** Identifies the operator @p A of level @p l and its current values. */

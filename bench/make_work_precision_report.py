@@ -255,7 +255,7 @@ tot = sum(r["wall_s"] for r in ran if isinstance(r["wall_s"], float))
 md.append("## How this was measured\n")
 md.append(f"Run {META_KV.get('started', '?')} by `bench/work_precision.sh` (git "
           f"`{META_KV.get('git', '?')}`) on a machine with {META_KV.get('cpus', '?')} cores "
-          f"and {META_KV.get('mem_gb', '?')} GB memory; the program is serial and the cases ran "
+          f"and {META_KV.get('mem_gb', '?')} GB memory; the program used all cores (threads) and the cases ran "
           f"one at a time. **Every timing is a single measurement** (other processes, e.g. a "
           f"compiler, may have shared the machine). {len(ran)} cases ran in {tot / 60:.1f} min "
           f"(budget {float(META_KV.get('budget_s', 'nan')) / 60:.0f} min, per-case cap "

@@ -601,6 +601,7 @@ namespace FoslsContact
     qp.project_to_feasible(x);
     monitor.start(x);
     smoother.initialize_level(finest, qp.matrix, hierarchy.patches(finest), qp.role);
+    linear_role_used.clear(); // the linear roles of the finest level are gone
     ++version[finest];
 
     Vector<double> x_old(x);

@@ -288,6 +288,8 @@ namespace FoslsContact
   {
     const Level &      level    = levels[l];
     const unsigned int n_colors = level.color_start.size() - 1;
+    AssertThrow(!level.linear || level.linear_patch.size() == level.qps.size(),
+                ExcMessage("PatchSmoother: linear roles used before set_linear_roles()"));
     for (unsigned int step = 0; step < steps; ++step)
       for (unsigned int cc = 0; cc < n_colors; ++cc)
         {

@@ -1,5 +1,6 @@
 #include <fosls_contact/output/monitor.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <iomanip>
@@ -27,11 +28,11 @@ namespace FoslsContact
     history.clear();
     IterationRecord r;
     r.functional = qp.parts(x);
-    r.active     = qp.n_active(x);
-    r.violation  = qp.max_violation(x);
-    history.push_back(r);
-    active_set            = current_active_set(x);
+    active_set            = qp.active_set(x);
     active_set_changed_at = 0;
+    r.active    = std::count(active_set.begin(), active_set.end(), true);
+    r.violation = qp.max_violation(x);
+    history.push_back(r);
     pcout << "  " << solver_name << ": start  J = " << std::scientific
           << std::setprecision(6) << r.functional.total
           << "  active = " << r.active << std::endl;
@@ -47,7 +48,8 @@ namespace FoslsContact
     r.iteration    = history.size();
     r.functional   = qp.parts(x);
     r.correction   = qp.energy_norm(d);
-    r.active       = qp.n_active(x);
+    std::vector<bool> active = qp.active_set(x);
+    r.active       = std::count(active.begin(), active.end(), true);
     r.violation    = qp.max_violation(x);
     r.wall_seconds = timer.wall_time();
     const double previous = history.back().correction;
@@ -58,14 +60,11 @@ namespace FoslsContact
                 ExcMessage(solver_name + ": the iterate became NaN/Inf at "
                            "iteration " + std::to_string(r.iteration)));
     history.push_back(r);
-    {
-      std::vector<bool> active = current_active_set(x);
-      if (active != active_set)
-        {
-          active_set_changed_at = r.iteration;
-          active_set.swap(active);
-        }
-    }
+    if (active != active_set)
+      {
+        active_set_changed_at = r.iteration;
+        active_set.swap(active);
+      }
     if (history.size() == 2)
       cycles_after_first = n_cycles;
 
@@ -130,16 +129,6 @@ namespace FoslsContact
           << std::setprecision(3) << r.rate << "  active = " << r.active
           << std::endl;
     return stop || out_of_iterations;
-  }
-
-
-  std::vector<bool>
-  Monitor::current_active_set(const Vector<double> &x) const
-  {
-    std::vector<bool> active(x.size(), false);
-    for (types::global_dof_index i = 0; i < x.size(); ++i)
-      active[i] = qp.role[i] == DoFRole::bounded && x[i] >= qp.upper_bounds[i];
-    return active;
   }
 
 

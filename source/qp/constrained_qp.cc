@@ -3,6 +3,7 @@
 #include <deal.II/base/parallel.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -207,14 +208,21 @@ namespace FoslsContact
   }
 
 
+  std::vector<bool>
+  ConstrainedQP::active_set(const Vector<double> &x) const
+  {
+    std::vector<bool> active(x.size(), false);
+    for (types::global_dof_index i = 0; i < x.size(); ++i)
+      active[i] = role[i] == DoFRole::bounded && x[i] >= upper_bounds[i];
+    return active;
+  }
+
+
   unsigned int
   ConstrainedQP::n_active(const Vector<double> &x) const
   {
-    unsigned int n = 0;
-    for (types::global_dof_index i = 0; i < x.size(); ++i)
-      if (role[i] == DoFRole::bounded && x[i] >= upper_bounds[i])
-        ++n;
-    return n;
+    const std::vector<bool> active = active_set(x);
+    return std::count(active.begin(), active.end(), true);
   }
 
 

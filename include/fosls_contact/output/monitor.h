@@ -85,8 +85,6 @@ namespace FoslsContact
     const std::string &name() const { return solver_name; }
 
   private:
-    /** Which DoFs are at their upper bound in @p x. */
-    std::vector<bool> current_active_set(const Vector<double> &x) const;
 
     const ConstrainedQP &         qp;
     const Parameters::Solver      parameters;

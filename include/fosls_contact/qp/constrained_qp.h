@@ -80,6 +80,8 @@ namespace FoslsContact
     void project_to_feasible(Vector<double> &x) const;
     /** Largest violation of a bound or of a fixed value. */
     double max_violation(const Vector<double> &x) const;
+    /** Which DoFs are bounded and at their bound. */
+    std::vector<bool> active_set(const Vector<double> &x) const;
     /** Number of bounded DoFs at their bound. */
     unsigned int n_active(const Vector<double> &x) const;
     /** KKT residuals at x. */

@@ -416,11 +416,11 @@ namespace FoslsContact
 
   namespace
   {
-    /** A restricted to the inactive set: truncated rows and columns are 0. */
+    /** A restricted to the inactive set: the rows and columns of the
+     * fixed DoFs are 0. */
     struct TruncatedOperator
     {
-      const SparseMatrix<double> &A;
-      const std::vector<DoFRole> &role;
+      const SparseMatrix<double> &                A;
       const std::vector<types::global_dof_index> &fixed;
       void
       vmult(Vector<double> &dst, const Vector<double> &src) const
@@ -494,7 +494,7 @@ namespace FoslsContact
     for (types::global_dof_index i = 0; i < n; ++i)
       if (linear_role[i] == DoFRole::fixed)
         fixed.push_back(i);
-    TruncatedOperator op{A, linear_role, fixed};
+    TruncatedOperator op{A, fixed};
 
     // The Newton direction d = increment + (solution of the linear problem
     // on the free DoFs). A free DoF that the direction would push past its

@@ -191,7 +191,6 @@ namespace FoslsContact
   PatchSmoother::relax_patches(const Level &         level,
                                const unsigned int    begin,
                                const unsigned int    end,
-                               const bool            reverse,
                                Vector<double> &      v,
                                const Vector<double> &r) const
   {
@@ -200,9 +199,8 @@ namespace FoslsContact
     std::vector<double> g, s, c;
     std::vector<bool>   at_bound;
     unsigned int        increases = 0;
-    for (unsigned int kk = begin; kk < end; ++kk)
+    for (unsigned int k = begin; k < end; ++k)
       {
-        const unsigned int k    = reverse ? begin + end - 1 - kk : kk;
         const auto *       dofs = level.dofs.data() + level.start[k];
         const unsigned int n    = level.start[k + 1] - level.start[k];
         const double *     inv  = level.inverse.data() + level.inverse_start[k];
@@ -300,7 +298,7 @@ namespace FoslsContact
             level.color_start[color],
             level.color_start[color + 1],
             [&](const unsigned int begin, const unsigned int end) {
-              relax_patches(level, begin, end, false, v, r);
+              relax_patches(level, begin, end, v, r);
             },
             64);
         }

@@ -155,13 +155,12 @@ namespace FoslsContact
     };
 
     /**
-     * Relax the packed patches [begin, end) of @p level once, in reverse
-     * order if @p reverse.
+     * Relax the packed patches [begin, end) of @p level once (they are of
+     * one color, so their order does not matter).
      */
     void relax_patches(const Level &         level,
                        const unsigned int    begin,
                        const unsigned int    end,
-                       const bool            reverse,
                        Vector<double> &      v,
                        const Vector<double> &r) const;
 

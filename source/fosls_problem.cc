@@ -150,7 +150,8 @@ namespace FoslsContact
 
   template <int dim>
   std::unique_ptr<QPSolver>
-  FoslsProblem<dim>::make_solver(const unsigned int level) const
+  FoslsProblem<dim>::make_solver(const ConstrainedQP &level_qp,
+                                 const unsigned int   level) const
   {
     switch (parameters.solver.type)
       {
@@ -161,7 +162,7 @@ namespace FoslsContact
         default:
           {
             auto solver = std::make_unique<MonotoneMultigrid<dim>>(
-              *discretization, *transfer, level, parameters.solver);
+              *discretization, *transfer, level, level_qp.sparsity, parameters.solver);
             if (level == discretization->finest_level())
               solver->set_timer(timer);
             return solver;
@@ -200,7 +201,7 @@ namespace FoslsContact
     if (level == 0)
       ActiveSetDirect().solve(level_qp, x, level_monitor);
     else
-      make_solver(level)->solve(level_qp, x, level_monitor);
+      make_solver(level_qp, level)->solve(level_qp, x, level_monitor);
     return x;
   }
 
@@ -279,7 +280,7 @@ namespace FoslsContact
     // depends on the mesh only, so it is set-up time, not solve time.
     TimerOutput::Scope t(timer, "Setup: solver");
     Timer              wall;
-    solver = make_solver(discretization->finest_level());
+    solver = make_solver(qp, discretization->finest_level());
     time_setup += wall.wall_time();
   }
 

@@ -42,8 +42,11 @@ namespace FoslsContact
     void solve();
     void output_results();
 
-    /** A solver for the problem whose finest level is @p level. */
-    std::unique_ptr<QPSolver> make_solver(const unsigned int level) const;
+    /**
+     * A solver for @p level_qp, the problem assembled on level @p level.
+     */
+    std::unique_ptr<QPSolver> make_solver(const ConstrainedQP &level_qp,
+                                          const unsigned int   level) const;
     /** Solve the problem assembled on level @p level (for initial guesses). */
     Vector<double> solve_on_level(const unsigned int level,
                                   const Vector<double> *start) const;

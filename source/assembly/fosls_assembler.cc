@@ -343,7 +343,7 @@ namespace FoslsContact
       std::rethrow_exception(error);
     qp.matrix_eq *= 2.;
     qp.matrix_compl *= 2.;
-    qp.compress_part_matrices();
+    qp.compress_matrices();
     qp.constant = qp.constant_eq;
   }
 

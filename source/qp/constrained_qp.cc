@@ -32,18 +32,25 @@ namespace FoslsContact
 
   namespace
   {
-    /** Put @p matrix on the pattern of its nonzero entries (and diagonal). */
+    /**
+     * Put @p matrix on the pattern of its entries with |a_ij| >
+     * drop sqrt(|a_ii a_jj|) (drop = 0: its nonzero entries). The rule is
+     * symmetric, so a symmetric matrix stays symmetric.
+     */
     void
-    compress(SparseMatrix<double> &matrix, SparsityPattern &sparsity)
+    compress(SparseMatrix<double> &matrix, SparsityPattern &sparsity, const double drop)
     {
       const auto             n = matrix.m();
+      std::vector<double>    root_diagonal(n);
+      for (types::global_dof_index i = 0; i < n; ++i)
+        root_diagonal[i] = std::sqrt(std::abs(matrix.diag_element(i)));
       DynamicSparsityPattern dsp(n, n);
       std::vector<std::pair<types::global_dof_index, double>> entries;
       std::vector<std::size_t>                                row_end;
       for (types::global_dof_index i = 0; i < n; ++i)
         {
           for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
-            if (e->value() != 0.)
+            if (std::abs(e->value()) > drop * root_diagonal[i] * root_diagonal[e->column()])
               {
                 dsp.add(i, e->column());
                 entries.emplace_back(e->column(), e->value());
@@ -61,10 +68,11 @@ namespace FoslsContact
 
 
   void
-  ConstrainedQP::compress_part_matrices()
+  ConstrainedQP::compress_matrices()
   {
-    compress(matrix_eq, sparsity_eq);
-    compress(matrix_compl, sparsity_compl);
+    compress(matrix, sparsity, round_off_drop);
+    compress(matrix_eq, sparsity_eq, 0.);
+    compress(matrix_compl, sparsity_compl, 0.);
   }
 
 

@@ -19,9 +19,11 @@ namespace FoslsContact
   MonotoneMultigrid<dim>::MonotoneMultigrid(const Discretization<dim> &discretization,
                                             const LevelTransfer<dim> & transfer,
                                             const unsigned int         finest_level,
+                                            const SparsityPattern &    fine_sparsity,
                                             const Parameters::Solver & parameters)
     : hierarchy(discretization, transfer, finest_level)
     , parameters(parameters)
+    , fine_sparsity(&fine_sparsity)
     , finest(finest_level)
     , smoother(finest_level + 1)
     , galerkin_sparsity(finest_level + 1)
@@ -45,9 +47,7 @@ namespace FoslsContact
     // recomputes values.
     for (unsigned int l = finest; l > 0; --l)
       {
-        const SparsityPattern &A = l == finest ?
-                                     discretization.level(finest).sparsity :
-                                     galerkin_sparsity[l];
+        const SparsityPattern &A = l == finest ? fine_sparsity : galerkin_sparsity[l];
         const SparsityPattern &P0 = hierarchy.prolongation(l).get_sparsity_pattern();
         DynamicSparsityPattern prolongation_dsp(P0.n_rows(), P0.n_cols());
         for (auto e = P0.begin(); e != P0.end(); ++e)
@@ -126,7 +126,8 @@ namespace FoslsContact
         if (removed[e->column()])
           e->value() = 0;
 
-    galerkin_product[l].compute(A, Pt, product[l], galerkin[l - 1]);
+    galerkin_product[l].compute(
+      A, Pt, product[l], galerkin[l - 1], ConstrainedQP::round_off_drop);
     truncation_used[l] = truncated;
     version_used[l]    = version[l];
     reroute_used[l]    = reroute;
@@ -603,6 +604,9 @@ namespace FoslsContact
   {
     AssertThrow(qp.size() == hierarchy.level(finest).n_dofs,
                 ExcMessage("monotone multigrid: problem and hierarchy differ"));
+    AssertThrow(&qp.matrix.get_sparsity_pattern() == fine_sparsity,
+                ExcMessage("monotone multigrid: the problem's matrix is not on the "
+                           "pattern the solver was set up for"));
     qp.project_to_feasible(x);
     monitor.start(x);
     smoother.initialize_level(finest, qp.matrix, hierarchy.patches(finest), qp.role);

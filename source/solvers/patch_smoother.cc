@@ -15,15 +15,15 @@ namespace FoslsContact
 
   std::vector<unsigned int>
   PatchSmoother::color_patches(
-    const SparsityPattern &                                   sparsity,
+    const SparseMatrix<double> &                              matrix,
     const std::vector<std::vector<types::global_dof_index>> &patches)
   {
     // the patches of every DoF (compressed rows)
-    std::vector<unsigned int> first(sparsity.n_rows() + 1, 0);
+    std::vector<unsigned int> first(matrix.m() + 1, 0);
     for (const auto &patch : patches)
       for (const auto dof : patch)
         ++first[dof + 1];
-    for (unsigned int i = 0; i < sparsity.n_rows(); ++i)
+    for (unsigned int i = 0; i < matrix.m(); ++i)
       first[i + 1] += first[i];
     std::vector<unsigned int> owner(first.back());
     {
@@ -41,10 +41,11 @@ namespace FoslsContact
         // symmetric, so then q reads a DoF of p as well)
         unsigned int c = 0;
         for (const auto dof : patches[p])
-          for (auto e = sparsity.begin(dof); e != sparsity.end(dof); ++e)
-            for (unsigned int k = first[e->column()]; k < first[e->column() + 1]; ++k)
-              if (owner[k] < p)
-                c = std::max(c, color[owner[k]] + 1);
+          for (auto e = matrix.begin(dof); e != matrix.end(dof); ++e)
+            if (e->value() != 0.)
+              for (unsigned int k = first[e->column()]; k < first[e->column() + 1]; ++k)
+                if (owner[k] < p)
+                  c = std::max(c, color[owner[k]] + 1);
         color[p] = c;
       }
     return color;
@@ -59,62 +60,76 @@ namespace FoslsContact
     const std::vector<DoFRole> &                             role)
   {
     Level &level = levels[l];
-    // the coloring depends only on the pattern, which is fixed per level
-    std::vector<unsigned int> patch_color = std::move(level.patch_color);
-    if (patch_color.size() != patches.size())
-      patch_color = color_patches(matrix.get_sparsity_pattern(), patches);
-    level = Level();
-    level.patch_color = std::move(patch_color);
-    const unsigned int n_colors =
-      patches.empty() ? 0 :
-                        *std::max_element(level.patch_color.begin(), level.patch_color.end()) + 1;
+    level        = Level();
+    const std::vector<unsigned int> patch_color = color_patches(matrix, patches);
+    const unsigned int              n_colors =
+      patches.empty() ? 0 : *std::max_element(patch_color.begin(), patch_color.end()) + 1;
 
-    // Layout (serial, cheap): the patches in color order, each with the
-    // DoFs that can move (not fixed, not switched off by a zero diagonal),
-    // and the offsets of its DoFs, inverse and rows in the packed arrays.
+    // Layout (serial): the patches in color order, each with the DoFs that
+    // can move (not fixed, not switched off by a zero diagonal), its
+    // neighbourhood (those DoFs first, then the other columns of their
+    // rows) and its rows with columns numbered within the neighbourhood.
     std::vector<std::vector<unsigned int>> by_color(n_colors);
     for (unsigned int p = 0; p < patches.size(); ++p)
-      by_color[level.patch_color[p]].push_back(p);
-    auto row_length = [&](const types::global_dof_index dof) {
-      std::size_t length = 0;
-      for (auto e = matrix.begin(dof); e != matrix.end(dof); ++e)
-        length += (e->value() != 0.);
-      return length;
-    };
+      by_color[patch_color[p]].push_back(p);
     level.start.push_back(0);
     level.inverse_start.push_back(0);
+    level.neighbor_start.push_back(0);
     level.row_start.push_back(0);
     level.color_start.push_back(0);
-    unsigned int n_qps = 0;
+    std::vector<unsigned int> local(matrix.m(), numbers::invalid_unsigned_int);
+    unsigned int              n_qps = 0;
     for (const auto &color : by_color)
       {
         for (const unsigned int p : color)
           {
+            const auto   first       = level.neighbors.size();
             bool         any_bounded = false;
             unsigned int n           = 0;
             for (const auto dof : patches[p])
               if (role[dof] != DoFRole::fixed && matrix.diag_element(dof) > 0)
                 {
-                  level.dofs.push_back(dof);
+                  local[dof] = n++;
+                  level.neighbors.push_back(dof);
                   level.bounded.push_back(role[dof] == DoFRole::bounded);
-                  level.row_start.push_back(level.row_start.back() + row_length(dof));
                   any_bounded |= role[dof] == DoFRole::bounded;
-                  ++n;
                 }
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                for (auto e = matrix.begin(level.neighbors[first + a]);
+                     e != matrix.end(level.neighbors[first + a]);
+                     ++e)
+                  if (e->value() != 0.)
+                    {
+                      if (local[e->column()] == numbers::invalid_unsigned_int)
+                        {
+                          local[e->column()] = level.neighbors.size() - first;
+                          level.neighbors.push_back(e->column());
+                        }
+                      level.columns.push_back(local[e->column()]);
+                    }
+                level.row_start.push_back(level.columns.size());
+              }
+            const auto m = level.neighbors.size() - first;
+            AssertThrow(m <= std::numeric_limits<std::uint16_t>::max() + std::size_t(1),
+                        ExcMessage("PatchSmoother: a patch's rows reach more than 65536 DoFs"));
+            for (auto j = first; j < level.neighbors.size(); ++j)
+              local[level.neighbors[j]] = numbers::invalid_unsigned_int;
             if (n == 0)
               continue;
             level.box_qp.push_back(any_bounded ? n_qps++ : numbers::invalid_unsigned_int);
-            level.start.push_back(level.dofs.size());
-            level.inverse_start.push_back(level.inverse_start.back() + n * n);
+            level.start.push_back(level.bounded.size());
+            level.neighbor_start.push_back(level.neighbors.size());
+            level.inverse_start.push_back(level.inverse_start.back() + n * (n + 1) / 2);
           }
         level.color_start.push_back(level.box_qp.size());
       }
 
     // Values (in parallel, patch by patch): the inverse of the patch
-    // matrix, a BoxQP for patches with a bounded DoF, and the rows.
+    // matrix (its upper triangle), a BoxQP for patches with a bounded DoF,
+    // and the rows' values in the order of their columns above.
     level.inverse.resize(level.inverse_start.back());
-    level.columns.resize(level.row_start.back());
-    level.values.resize(level.row_start.back());
+    level.values.resize(level.columns.size());
     level.qps.resize(n_qps);
     parallel::apply_to_subranges(
       0u,
@@ -122,27 +137,23 @@ namespace FoslsContact
       [&](const unsigned int begin, const unsigned int end) {
         for (unsigned int k = begin; k < end; ++k)
           {
-            const auto *       dofs = level.dofs.data() + level.start[k];
+            const auto *       dofs = level.neighbors.data() + level.neighbor_start[k];
             const unsigned int n    = level.start[k + 1] - level.start[k];
             FullMatrix<double> M(n, n);
             for (unsigned int a = 0; a < n; ++a)
               for (unsigned int b = 0; b < n; ++b)
                 M(a, b) = matrix.el(dofs[a], dofs[b]);
-            BoxQP qp(M);
+            BoxQP   qp(M);
             double *inverse = level.inverse.data() + level.inverse_start[k];
             for (unsigned int a = 0; a < n; ++a)
-              for (unsigned int b = 0; b < n; ++b)
-                inverse[a * n + b] = qp.inverse_entry(a, b);
+              for (unsigned int b = a; b < n; ++b)
+                *inverse++ = qp.inverse_entry(a, b);
             for (unsigned int a = 0; a < n; ++a)
               {
                 std::size_t j = level.row_start[level.start[k] + a];
                 for (auto e = matrix.begin(dofs[a]); e != matrix.end(dofs[a]); ++e)
                   if (e->value() != 0.)
-                    {
-                      level.columns[j] = e->column();
-                      level.values[j]  = e->value();
-                      ++j;
-                    }
+                    level.values[j++] = e->value();
               }
             if (level.box_qp[k] != numbers::invalid_unsigned_int)
               level.qps[level.box_qp[k]] = std::move(qp);
@@ -160,7 +171,7 @@ namespace FoslsContact
     for (unsigned int k = 0; k < level.box_qp.size(); ++k)
       if (level.box_qp[k] != numbers::invalid_unsigned_int)
         {
-          const auto *       dofs  = level.dofs.data() + level.start[k];
+          const auto *       dofs  = level.neighbors.data() + level.neighbor_start[k];
           const unsigned int n     = level.start[k + 1] - level.start[k];
           const BoxQP &      qp    = level.qps[level.box_qp[k]];
           auto &             patch = level.linear_patch[level.box_qp[k]];
@@ -196,29 +207,34 @@ namespace FoslsContact
   {
     const auto &        ub  = *level.obstacles;
     const double        inf = std::numeric_limits<double>::infinity();
-    std::vector<double> g, s, c;
+    std::vector<double> g, s, c, near;
     std::vector<bool>   at_bound;
     unsigned int        increases = 0;
     for (unsigned int k = begin; k < end; ++k)
       {
-        const auto *       dofs = level.dofs.data() + level.start[k];
+        // the patch's DoFs are the first n of its neighbourhood
+        const auto *       dofs = level.neighbors.data() + level.neighbor_start[k];
+        const unsigned int m    = level.neighbor_start[k + 1] - level.neighbor_start[k];
         const unsigned int n    = level.start[k + 1] - level.start[k];
         const double *     inv  = level.inverse.data() + level.inverse_start[k];
         g.resize(n);
         s.resize(n);
         c.resize(n);
+        near.resize(m);
+        for (unsigned int j = 0; j < m; ++j)
+          near[j] = v[dofs[j]];
         const bool linear_patch =
           level.linear && level.box_qp[k] != numbers::invalid_unsigned_int;
         for (unsigned int a = 0; a < n; ++a)
           {
-            const auto          i      = dofs[a];
-            const std::size_t   first  = level.row_start[level.start[k] + a];
-            const std::size_t   last   = level.row_start[level.start[k] + a + 1];
-            const unsigned int *column = level.columns.data();
-            const double *      value  = level.values.data();
-            double              gi     = r[i];
+            const auto           i      = dofs[a];
+            const std::size_t    first  = level.row_start[level.start[k] + a];
+            const std::size_t    last   = level.row_start[level.start[k] + a + 1];
+            const std::uint16_t *column = level.columns.data();
+            const double *       value  = level.values.data();
+            double               gi     = r[i];
             for (std::size_t e = first; e < last; ++e)
-              gi -= value[e] * v[column[e]];
+              gi -= value[e] * near[column[e]];
             g[a] = gi;
             s[a] = level.bounded[level.start[k] + a] ? std::max(0., ub[i] - v[i]) : inf;
           }
@@ -244,18 +260,27 @@ namespace FoslsContact
               ++increases;
             continue;
           }
-        // the unconstrained patch minimizer c = M^{-1} g, and the change
-        // of the objective, 1/2 c^T M c - g^T c = -1/2 g^T c
+        // the unconstrained patch minimizer c = M^{-1} g (the upper
+        // triangle of M^{-1} by rows), and the change of the objective,
+        // 1/2 c^T M c - g^T c = -1/2 g^T c
+        std::fill(c.begin(), c.end(), 0.);
+        for (unsigned int a = 0; a < n; ++a)
+          {
+            double ca = c[a] + inv[0] * g[a];
+            for (unsigned int b = a + 1; b < n; ++b)
+              {
+                ca += inv[b - a] * g[b];
+                c[b] += inv[b - a] * g[a];
+              }
+            c[a] = ca;
+            inv += n - a;
+          }
         bool   feasible = true;
         double gc       = 0;
         for (unsigned int a = 0; a < n; ++a)
           {
-            double ca = 0;
-            for (unsigned int b = 0; b < n; ++b)
-              ca += inv[a * n + b] * g[b];
-            c[a] = ca;
-            gc += g[a] * ca;
-            feasible &= ca <= s[a];
+            gc += g[a] * c[a];
+            feasible &= c[a] <= s[a];
           }
         double change = -0.5 * gc;
         if (feasible)

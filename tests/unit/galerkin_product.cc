@@ -12,6 +12,8 @@
 //    computed twice with different truncations, equals deal.II's product
 //    (into zeroed matrices) to round-off, with 1 and with 2 threads (and
 //    the same bits).
+//    With a drop tolerance, exactly the entries below it relative to the
+//    diagonal become 0.
 // 3. PatchSmoother::color_patches keeps the order of every coupled pair of
 //    patches (level scheduling), so a smoothing step relaxed color by
 //    color in parallel gives the same bits as the sequential sweep over
@@ -133,6 +135,34 @@ main()
                    results.begin() + results.size() / 2),
         "the same bits with 1 and 2 threads");
 
+  // 2b. the drop rule: entries with |g_ij| <= drop sqrt(g_ii g_jj) become
+  // 0, the others are untouched (drop = 0.05 is far above round-off: it
+  // takes out the weak couplings of this matrix, to see the rule work)
+  {
+    Pt.copy_from(P);
+    SparseMatrix<double> reference(galerkin_pattern);
+    galerkin_product.compute(A, Pt, product, reference);
+    galerkin_product.compute(A, Pt, product, galerkin, 0.05);
+    unsigned int n_dropped = 0, n_wrong = 0;
+    for (unsigned int i = 0; i < galerkin.m(); ++i)
+      for (auto e = galerkin.begin(i); e != galerkin.end(i); ++e)
+        {
+          const unsigned int j     = e->column();
+          const double       ref   = reference.el(i, j);
+          const double       bound = 0.05 * std::sqrt(reference.diag_element(i) *
+                                                        reference.diag_element(j));
+          if (std::abs(ref) <= bound)
+            {
+              n_dropped += ref != 0.;
+              n_wrong += e->value() != 0.;
+            }
+          else
+            n_wrong += e->value() != ref;
+        }
+    check(n_dropped > 0 && n_wrong == 0,
+          "drop 0.05: the weak entries are 0, the others unchanged");
+  }
+
   // 3. level scheduling of overlapping patches {i, i+1, i+2} of A
   std::vector<std::vector<types::global_dof_index>> patches;
   for (unsigned int i = 0; i + 2 < n; i += 1)
@@ -147,7 +177,7 @@ main()
   for (unsigned int k = patches.size() - 1; k + 1 > 0; --k)
     if (k % 5 == 4)
       ordered.push_back(patches[k]);
-  const auto color = PatchSmoother::color_patches(A_pattern, ordered);
+  const auto color = PatchSmoother::color_patches(A, ordered);
   // patches starting at a and b are coupled if |a - b| <= 4
   std::vector<unsigned int> position(patches.size());
   for (unsigned int p = 0; p < ordered.size(); ++p)

@@ -11,6 +11,8 @@
 //    condition ~3e4 there: PGS contracts by ~0.9997 per sweep); J never
 //    increases (Monitor::energy_increases() == 0 and a monotone history;
 //    the runs stop well before J's changes reach its round-off).
+//  - the assembled matrix is on the pattern of its entries above
+//    round-off, and symmetric.
 // Functional values are printed scaled by 1e7 (they are ~1e-7).
 #include <deal.II/base/mpi.h>
 
@@ -51,6 +53,40 @@ struct Problem
   const Discretization<2>         discretization;
   ConstrainedQP                   qp;
 };
+
+
+// The assembled A is on the pattern of its entries above round-off
+// (ConstrainedQP::compress_matrices): no entry with |a_ij| <= 1e-13
+// sqrt(a_ii a_jj) is left, fewer entries than the DoF coupling pattern,
+// and the pattern is symmetric (the values are symmetric to round-off:
+// the assembly sums a_ij and a_ji in different orders).
+void
+check_compressed_matrix(const unsigned int levels)
+{
+  std::cout << "--- compressed matrix, " << levels << " levels" << std::endl;
+  Problem                  p(levels, "active set");
+  const SparseMatrix<double> &A = p.qp.matrix;
+  unsigned int              n_small = 0, n_asymmetric = 0;
+  double                    asymmetry = 0;
+  for (unsigned int i = 0; i < A.m(); ++i)
+    for (auto e = A.begin(i); e != A.end(i); ++e)
+      {
+        const unsigned int j = e->column();
+        n_small += std::abs(e->value()) <=
+                   ConstrainedQP::round_off_drop *
+                     std::sqrt(std::abs(A.diag_element(i) * A.diag_element(j)));
+        n_asymmetric += !A.get_sparsity_pattern().exists(j, i);
+        asymmetry = std::max(asymmetry,
+                             std::abs(e->value() - A.el(j, i)) /
+                               std::sqrt(std::abs(A.diag_element(i) * A.diag_element(j))));
+      }
+  const auto n_coupling =
+    p.discretization.level(p.discretization.finest_level()).sparsity.n_nonzero_elements();
+  check(n_small == 0, "no entry at round-off level");
+  check(n_asymmetric == 0, "symmetric pattern");
+  check(asymmetry < 1e-14, "symmetric values to round-off");
+  check(A.n_nonzero_elements() < n_coupling, "fewer entries than the DoF coupling pattern");
+}
 
 
 Vector<double>
@@ -190,6 +226,7 @@ main(int argc, char *argv[])
 {
   // the reference solver factorizes with Trilinos (Amesos KLU): MPI first
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  check_compressed_matrix(5);
   const Vector<double> x2 = solve_active_set(2);
   solve_active_set(4);
   // the FOSLS matrix is ill conditioned (diagonally scaled: ~3e4 on 2

@@ -42,7 +42,17 @@ namespace FoslsContact
    */
   struct ConstrainedQP
   {
+    /**
+     * A, after compress_matrices() on the pattern of its own nonzero
+     * entries (@p sparsity) rather than on the DoF coupling pattern of the
+     * level: at level 9 of the square that pattern holds 27% entries that
+     * are zero or round-off (|a_ij| <= 1e-15 sqrt(a_ii a_jj), where an
+     * exact computation gives 0; the smallest genuine entry is 1e-8 of
+     * that), and every product with A, every Galerkin product and every
+     * patch residual would stream them.
+     */
     SparseMatrix<double> matrix;
+    SparsityPattern      sparsity;
     Vector<double>       rhs;
     double               constant = 0;
 
@@ -55,6 +65,13 @@ namespace FoslsContact
      */
     SparseMatrix<double> matrix_eq, matrix_compl;
     SparsityPattern      sparsity_eq, sparsity_compl;
+
+    /**
+     * Entries of A with |a_ij| <= round_off_drop sqrt(|a_ii a_jj|) are
+     * round-off of an exact zero (measured: all such entries of the
+     * assembled A are below 1e-15, all others above 1e-8) and are dropped.
+     */
+    static constexpr double round_off_drop = 1e-13;
     Vector<double>       rhs_eq, rhs_compl;
     double               constant_eq = 0;
 
@@ -69,8 +86,11 @@ namespace FoslsContact
 
     types::global_dof_index size() const { return rhs.size(); }
 
-    /** Shrink matrix_eq and matrix_compl to their nonzero entries. */
-    void compress_part_matrices();
+    /**
+     * Put A (without its round-off entries, see round_off_drop),
+     * matrix_eq and matrix_compl on patterns of their nonzero entries.
+     */
+    void compress_matrices();
 
     /** J(x). */
     double value(const Vector<double> &x) const;

@@ -58,9 +58,16 @@ namespace FoslsContact
   class MonotoneMultigrid : public QPSolver
   {
   public:
+    /**
+     * The set-up that depends only on the mesh and on @p fine_sparsity,
+     * the pattern of the matrix of the problems to be solved (a
+     * ConstrainedQP's compressed pattern): the hierarchy and the patterns
+     * of the Galerkin products.
+     */
     MonotoneMultigrid(const Discretization<dim> & discretization,
                       const LevelTransfer<dim> &  transfer,
                       const unsigned int          finest_level,
+                      const SparsityPattern &     fine_sparsity,
                       const Parameters::Solver &  parameters);
 
     void solve(const ConstrainedQP &qp,
@@ -157,6 +164,8 @@ namespace FoslsContact
 
     const MultilevelHierarchy<dim> hierarchy;
     const Parameters::Solver       parameters;
+    /** The pattern the Galerkin products were set up for. */
+    const SparsityPattern *        fine_sparsity;
     const unsigned int             finest;
 
     PatchSmoother                                      smoother;

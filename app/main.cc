@@ -8,6 +8,11 @@
  * main() only reads the parameters and hands them to FoslsProblem; every
  * error ends in one line on stderr and exit code 1, before any output file
  * is written.
+ *
+ * The program runs on one MPI rank and uses the cores of the machine with
+ * threads (Solver/Threads). Started by mpirun on more ranks it stops with
+ * that error: every rank would otherwise solve the whole problem and write
+ * the same files at the same time.
  */
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/multithread_info.h>
@@ -104,9 +109,16 @@ main(int argc, char *argv[])
   dealii::deal_II_exceptions::disable_abort_on_exception();
   dealii::deal_II_exceptions::suppress_stacktrace_in_exceptions();
 
-  std::string where = "command line";
+  const bool  first_rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  std::string where      = "command line";
   try
     {
+      const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+      AssertThrow(n_ranks == 1,
+                  dealii::ExcMessage("started on " + std::to_string(n_ranks) +
+                                     " MPI ranks, but fosls-contact runs on one rank "
+                                     "and uses the cores with threads (Solver/Threads): "
+                                     "start it without mpirun"));
       std::string              file;
       std::vector<std::string> overrides;
       for (int i = 1; i < argc; ++i)
@@ -178,13 +190,16 @@ main(int argc, char *argv[])
     }
   catch (const std::exception &exc)
     {
-      std::cerr << "fosls-contact: error in " << where << ": " << one_line(exc)
-                << std::endl;
+      // every rank meets the same error: one line from the first
+      if (first_rank)
+        std::cerr << "fosls-contact: error in " << where << ": " << one_line(exc)
+                  << std::endl;
       return 1;
     }
   catch (...)
     {
-      std::cerr << "fosls-contact: unknown error in " << where << std::endl;
+      if (first_rank)
+        std::cerr << "fosls-contact: unknown error in " << where << std::endl;
       return 1;
     }
   return 0;

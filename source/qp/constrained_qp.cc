@@ -20,6 +20,7 @@ namespace FoslsContact
     rhs_eq.reinit(level.n_dofs);
     rhs_compl.reinit(level.n_dofs);
     constant = constant_eq = 0;
+    coupling_sparsity = &level.sparsity;
     role         = level.role;
     dimension    = dim;
     fixed_values = level.fixed_values;

@@ -27,7 +27,7 @@ namespace FoslsContact
         if (qp.role[i] != DoFRole::free || qp.role[e->column()] != DoFRole::free)
           e->value() = (i == e->column()) ? 1. : 0.;
     SparseDirectSolver direct;
-    direct.initialize(M);
+    direct.initialize(M, qp.coupling_sparsity);
 
     const unsigned int       nc = contact.size();
     LAPACKFullMatrix<double> S(nc, nc);

@@ -10,10 +10,12 @@ namespace FoslsContact
 
 
   void
-  SparseDirectSolver::initialize(const SparseMatrix<double> &A)
+  SparseDirectSolver::initialize(const SparseMatrix<double> &A,
+                                 const SparsityPattern *     pattern)
   {
     matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
-    matrix->reinit(A);
+    // (deal.II's default drop tolerance of the copy, 1e-13, on the values)
+    matrix->reinit(A, 1e-13, true, pattern);
     solver = std::make_unique<TrilinosWrappers::SolverDirect>(
       control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
     solver->initialize(*matrix);

@@ -16,6 +16,7 @@ namespace FoslsContact
      */
     void
     solve_reduced(const SparseMatrix<double> &A,
+                  const SparsityPattern *     factorization_pattern,
                   const Vector<double> &      b,
                   const std::vector<bool> &   eliminated,
                   Vector<double> &            x)
@@ -39,7 +40,7 @@ namespace FoslsContact
         if (eliminated[i])
           rhs[i] = x[i];
       SparseDirectSolver direct;
-      direct.initialize(M);
+      direct.initialize(M, factorization_pattern);
       direct.vmult(x, rhs);
     }
   } // namespace
@@ -52,7 +53,8 @@ namespace FoslsContact
                            const Vector<double> &      ub,
                            Vector<double> &            x,
                            const unsigned int          max_steps,
-                           Monitor *                   monitor)
+                           Monitor *                   monitor,
+                           const SparsityPattern *     factorization_pattern)
   {
     const auto        n = x.size();
     std::vector<bool> eliminated(n), active(n, false), previous;
@@ -76,7 +78,7 @@ namespace FoslsContact
         previous = active;
         if (monitor)
           x_old = x;
-        solve_reduced(A, b, eliminated, x);
+        solve_reduced(A, factorization_pattern, b, eliminated, x);
         A.vmult(Ax, x);
         for (types::global_dof_index i = 0; i < n; ++i)
           mu[i] = active[i] ? b[i] - Ax[i] : 0.;
@@ -118,7 +120,8 @@ namespace FoslsContact
                                     qp.upper_bounds,
                                     x,
                                     std::numeric_limits<unsigned int>::max(),
-                                    &monitor);
+                                    &monitor,
+                                    qp.coupling_sparsity);
     AssertThrow(outcome != Outcome::cycling,
                 ExcMessage("active set: the primal-dual active set method "
                            "cycles (an active set repeated); use Solver/Type "

@@ -53,7 +53,13 @@ namespace FoslsContact
      */
     SparseMatrix<double> matrix;
     SparsityPattern      sparsity;
-    Vector<double>       rhs;
+    /**
+     * The DoF coupling pattern of the level (set by reinit()), which holds
+     * A's pattern: the direct solver factorizes on it (see
+     * SparseDirectSolver::initialize()).
+     */
+    const SparsityPattern *coupling_sparsity = nullptr;
+    Vector<double>         rhs;
     double               constant = 0;
 
     /**

@@ -23,8 +23,16 @@ namespace FoslsContact
   {
   public:
     SparseDirectSolver();
-    /** Factorize @p matrix. */
-    void initialize(const SparseMatrix<double> &matrix);
+    /**
+     * Factorize @p matrix, on @p pattern (which must hold the matrix's
+     * pattern) if given: KLU's fill-reducing ordering (AMD) works on the
+     * pattern, and does far better on the DoF coupling pattern of the mesh
+     * than on the pattern of a ConstrainedQP's matrix, from which zero and
+     * round-off entries are gone (square, level 7, active set solve: 1.3 s
+     * against 31 s; 11 s with explicit zeros only removed).
+     */
+    void initialize(const SparseMatrix<double> &matrix,
+                    const SparsityPattern *     pattern = nullptr);
     /** x = A^{-1} b with the factorization of initialize(). */
     void vmult(Vector<double> &x, const Vector<double> &b) const;
 

@@ -43,7 +43,9 @@ namespace FoslsContact
 
     /**
      * The method itself, shared by solve() and solve_quietly(): reports
-     * every step to @p monitor if there is one.
+     * every step to @p monitor if there is one; the direct solver
+     * factorizes on @p factorization_pattern if given (see
+     * SparseDirectSolver::initialize()).
      */
     static Outcome iterate(const SparseMatrix<double> &A,
                            const Vector<double> &      b,
@@ -51,7 +53,8 @@ namespace FoslsContact
                            const Vector<double> &      ub,
                            Vector<double> &            x,
                            const unsigned int          max_steps,
-                           Monitor *                   monitor);
+                           Monitor *                   monitor,
+                           const SparsityPattern *     factorization_pattern = nullptr);
   };
 } // namespace FoslsContact
 

@@ -181,8 +181,14 @@ def main():
         if g is None:
             continue
         for lam in ["1", "inf"]:
+            # plainzero: the plain cycle from a zero start instead of the
+            # paper's (the level-1 solution), where the coarse obstacles
+            # have something to do in the first cycles
             for solver, ssets in [("plain", {"Solver/Krylov steps": "0",
                                              "Solver/Max iterations": "100"}),
+                                  ("plainzero", {"Solver/Krylov steps": "0",
+                                                 "Solver/Max iterations": "100",
+                                                 "Solver/Initial guess": "zero"}),
                                   ("default", {})]:
                 for proj in "abcd":
                     s = {"Geometry/Levels": "2", "Geometry/Grading": f"{g:.6f}",

@@ -277,7 +277,8 @@ namespace FoslsContact
   {
     // The solver's set-up (for multigrid: the rotated prolongations, the
     // vertex patches and the sparsity patterns of the Galerkin products)
-    // depends on the mesh only, so it is set-up time, not solve time.
+    // depends on the mesh and on the pattern of the assembled matrix only
+    // (so it comes after assemble()): set-up time, not solve time.
     TimerOutput::Scope t(timer, "Setup: solver");
     Timer              wall;
     solver = make_solver(qp, discretization->finest_level());

@@ -35,8 +35,11 @@ namespace FoslsContact
   {
     /**
      * Put @p matrix on the pattern of its entries with |a_ij| >
-     * drop sqrt(|a_ii a_jj|) (drop = 0: its nonzero entries). The rule is
-     * symmetric, so a symmetric matrix stays symmetric.
+     * drop sqrt(|a_ii a_jj|) (drop = 0: its nonzero entries). The rule
+     * treats a_ij and a_ji alike, so the pattern stays symmetric unless
+     * one of them is within round-off of the threshold (measured on A: all
+     * entries are below 1e-15 or above 1e-8 of sqrt(a_ii a_jj); the patch
+     * coloring does not rely on symmetry either).
      */
     void
     compress(SparseMatrix<double> &matrix, SparsityPattern &sparsity, const double drop)

@@ -604,7 +604,8 @@ namespace FoslsContact
   {
     AssertThrow(qp.size() == hierarchy.level(finest).n_dofs,
                 ExcMessage("monotone multigrid: problem and hierarchy differ"));
-    AssertThrow(&qp.matrix.get_sparsity_pattern() == fine_sparsity,
+    AssertThrow(&qp.matrix.get_sparsity_pattern() == fine_sparsity &&
+                  fine_sparsity->n_nonzero_elements() == qp.matrix.n_nonzero_elements(),
                 ExcMessage("monotone multigrid: the problem's matrix is not on the "
                            "pattern the solver was set up for"));
     qp.project_to_feasible(x);

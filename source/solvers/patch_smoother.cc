@@ -33,20 +33,31 @@ namespace FoslsContact
           owner[next[dof]++] = p;
     }
 
-    // patches are colored in order, so an earlier patch has its color
-    std::vector<unsigned int> color(patches.size(), 0);
+    // Patches are colored in order. Patches p and q are coupled if one
+    // reads a DoF of the other through a nonzero entry. The nonzeros need
+    // not be symmetric (A and the Galerkin products are symmetric only to
+    // round-off, and entries at round-off level are dropped), so a patch
+    // also passes a lower bound on to the later patches it reads.
+    std::vector<unsigned int> color(patches.size(), 0), lower_bound(patches.size(), 0);
+    auto for_each_read = [&](const unsigned int p, const auto &f) {
+      for (const auto dof : patches[p])
+        for (auto e = matrix.begin(dof); e != matrix.end(dof); ++e)
+          if (e->value() != 0.)
+            for (unsigned int k = first[e->column()]; k < first[e->column() + 1]; ++k)
+              f(owner[k]);
+    };
     for (unsigned int p = 0; p < patches.size(); ++p)
       {
-        // patch q is coupled with p if p reads a DoF of q (the matrix is
-        // symmetric, so then q reads a DoF of p as well)
-        unsigned int c = 0;
-        for (const auto dof : patches[p])
-          for (auto e = matrix.begin(dof); e != matrix.end(dof); ++e)
-            if (e->value() != 0.)
-              for (unsigned int k = first[e->column()]; k < first[e->column() + 1]; ++k)
-                if (owner[k] < p)
-                  c = std::max(c, color[owner[k]] + 1);
+        unsigned int c = lower_bound[p];
+        for_each_read(p, [&](const unsigned int q) {
+          if (q < p)
+            c = std::max(c, color[q] + 1);
+        });
         color[p] = c;
+        for_each_read(p, [&](const unsigned int q) {
+          if (q > p)
+            lower_bound[q] = std::max(lower_bound[q], c + 1);
+        });
       }
     return color;
   }
@@ -242,19 +253,19 @@ namespace FoslsContact
           {
             // the linear problem: the fixed DoFs stay, the others have no
             // bound
-            const auto &       patch = level.linear_patch[level.box_qp[k]];
-            const unsigned int m     = patch.moving.size();
+            const auto &       patch    = level.linear_patch[level.box_qp[k]];
+            const unsigned int n_moving = patch.moving.size();
             double             gc = 0, scale = 0;
-            for (unsigned int a = 0; a < m; ++a)
+            for (unsigned int a = 0; a < n_moving; ++a)
               {
                 double ca = 0;
-                for (unsigned int b = 0; b < m; ++b)
-                  ca += patch.inverse[a * m + b] * g[patch.moving[b]];
+                for (unsigned int b = 0; b < n_moving; ++b)
+                  ca += patch.inverse[a * n_moving + b] * g[patch.moving[b]];
                 c[a] = ca;
                 gc += g[patch.moving[a]] * ca;
                 scale += std::abs(g[patch.moving[a]] * ca);
               }
-            for (unsigned int a = 0; a < m; ++a)
+            for (unsigned int a = 0; a < n_moving; ++a)
               v[dofs[patch.moving[a]]] += c[a];
             if (-0.5 * gc > 1e-10 * scale + 1e-300)
               ++increases;

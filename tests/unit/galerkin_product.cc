@@ -18,7 +18,8 @@
 //    patches (level scheduling), so a smoothing step relaxed color by
 //    color in parallel gives the same bits as the sequential sweep over
 //    the patches in their order (checked against a hand-written
-//    sequential sweep on a 1D chain of overlapping patches).
+//    sequential sweep on a 1D chain of overlapping patches), also where
+//    a coupling is a nonzero on one side only.
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
@@ -192,6 +193,20 @@ main()
   check(order_kept, "level scheduling: every coupled pair keeps its order");
   std::cout << "colors of " << ordered.size() << " patches: "
             << *std::max_element(color.begin(), color.end()) + 1 << std::endl;
+
+  // nonzeros that are not symmetric (an entry dropped on one side only):
+  // patch {0} reads DoF 1 of the later patch {1} (a_01 != 0), which does
+  // not read DoF 0 (a_10 = 0); they must still get different colors
+  {
+    DynamicSparsityPattern dsp(2, 2);
+    dsp.add(0, 0), dsp.add(0, 1), dsp.add(1, 0), dsp.add(1, 1);
+    SparsityPattern pattern;
+    pattern.copy_from(dsp);
+    SparseMatrix<double> B(pattern);
+    B.set(0, 0, 2.), B.set(1, 1, 2.), B.set(0, 1, -1.);
+    const auto c = PatchSmoother::color_patches(B, {{0}, {1}});
+    check(c[1] > c[0], "level scheduling with one-sided nonzeros keeps the order");
+  }
 
   // the colored sweep against a sequential one, forward and backward
   std::vector<DoFRole> role(n, DoFRole::free);

@@ -63,7 +63,7 @@ namespace FoslsContact
     double               constant = 0;
 
     /**
-     * After compress_part_matrices(), on patterns of their own nonzero
+     * After compress_matrices(), on patterns of their own nonzero
      * entries: the equilibrium part couples only fluxes of one stress row
      * in one cell, the complementarity part only contact DoFs, so they are
      * a fraction of A (at level 9 of the square 15% and 0.1% of its

@@ -96,7 +96,8 @@ namespace FoslsContact
      * Level scheduling of the sequential patch order: patch p gets the
      * color 1 + the largest color of the patches before it that it is
      * coupled with by a nonzero entry of @p matrix (a DoF of one is a
-     * column of a row of the other's), 0 if there is none. Relaxing color
+     * column of a row of the other's, in either direction: the nonzeros
+     * need not be symmetric), 0 if there is none. Relaxing color
      * by color then keeps the order of every coupled pair, which is all
      * that the result of a Gauss-Seidel sweep depends on. Returns the color
      * of every patch.

@@ -415,31 +415,37 @@ for mi in range(len(gr)):
     fig.savefig(os.path.join(FIG, f"disc_mesh{mi + 1}.png"), dpi=100)
     plt.close(fig)
     md.append(f"![mesh {mi + 1}](figures/disc_mesh{mi + 1}.png)\n")
+
+
+def disc_histories(mi, lam, solver):
+    """(run, history) of projections a-d that ran, the history being
+    (iteration, correction, functional) of every iteration."""
+    out = {}
+    for p in "abcd":
+        r = one(case=f"disc_m{mi}_lam{lam}_{solver}_{p}")
+        if ok(r):
+            out[p] = (r, [(z["iteration"], z["correction"], z["functional"]) for z in
+                          read_csv(os.path.join(RES, r["case"], "convergence.csv"))])
+    return out
+
+
 same, total, differing = 0, 0, []
 same_zero, total_zero, damped_zero = 0, 0, {p: 0 for p in "abcd"}
 iterations_zero = {p: [] for p in "abcd"}
 for mi in range(len(gr)):
     for lam in ["1", "inf"]:
-        hs = []
-        for p in "abcd":
-            r = one(case=f"disc_m{mi}_lam{lam}_plainzero_{p}")
-            if ok(r):
-                hs.append([(z["iteration"], z["correction"], z["functional"]) for z in
-                           read_csv(os.path.join(RES, r["case"], "convergence.csv"))])
-                damped_zero[p] += int(r["feasibility_dampings"] or 0)
-                iterations_zero[p].append(int(r["iterations"]))
+        runs = disc_histories(mi, lam, "plainzero")
+        for p, (r, _) in runs.items():
+            damped_zero[p] += int(r["feasibility_dampings"] or 0)
+            iterations_zero[p].append(int(r["iterations"]))
+        hs = [h for _, h in runs.values()]
         if len(hs) == 4:
             total_zero += 1
             same_zero += all(h == hs[0] for h in hs[1:])
 for mi in range(len(gr)):
     for lam in ["1", "inf"]:
         for solver in ["plain", "default"]:
-            hs = []
-            for p in "abcd":
-                r = one(case=f"disc_m{mi}_lam{lam}_{solver}_{p}")
-                if ok(r):
-                    hs.append([(z["iteration"], z["correction"], z["functional"]) for z in
-                               read_csv(os.path.join(RES, r["case"], "convergence.csv"))])
+            hs = [h for _, h in disc_histories(mi, lam, solver).values()]
             if len(hs) == 4:
                 total += 1
                 same += all(h == hs[0] for h in hs[1:])

@@ -150,22 +150,25 @@ namespace FoslsContact
           {
             const auto *       dofs = level.neighbors.data() + level.neighbor_start[k];
             const unsigned int n    = level.start[k + 1] - level.start[k];
+            // the rows, and from them the patch matrix: the patch DoFs are
+            // the first n positions of the neighbourhood
             FullMatrix<double> M(n, n);
-            for (unsigned int a = 0; a < n; ++a)
-              for (unsigned int b = 0; b < n; ++b)
-                M(a, b) = matrix.el(dofs[a], dofs[b]);
-            BoxQP   qp(M);
-            double *inverse = level.inverse.data() + level.inverse_start[k];
-            for (unsigned int a = 0; a < n; ++a)
-              for (unsigned int b = a; b < n; ++b)
-                *inverse++ = qp.inverse_entry(a, b);
             for (unsigned int a = 0; a < n; ++a)
               {
                 std::size_t j = level.row_start[level.start[k] + a];
                 for (auto e = matrix.begin(dofs[a]); e != matrix.end(dofs[a]); ++e)
                   if (e->value() != 0.)
-                    level.values[j++] = e->value();
+                    {
+                      if (level.columns[j] < n)
+                        M(a, level.columns[j]) = e->value();
+                      level.values[j++] = e->value();
+                    }
               }
+            BoxQP   qp(M);
+            double *inverse = level.inverse.data() + level.inverse_start[k];
+            for (unsigned int a = 0; a < n; ++a)
+              for (unsigned int b = a; b < n; ++b)
+                *inverse++ = qp.inverse_entry(a, b);
             if (level.box_qp[k] != numbers::invalid_unsigned_int)
               level.qps[level.box_qp[k]] = std::move(qp);
           }

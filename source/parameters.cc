@@ -406,8 +406,8 @@ namespace FoslsContact
                         "not depend on the number of threads; deal.II's sums "
                         "(dot products in the Newton step's CG) are split by "
                         "thread count, so other results can differ in the last "
-                        "digits (measured: at most 8e-11 relative in the contact force, "
-                        "doc/parallel_results.md).");
+                        "digits (measured: the contact force to 2e-10 relative or "
+                        "better, doc/parallel_results.md).");
       prm.declare_entry("Definiteness check max dofs",
                         "20000",
                         Patterns::Integer(0),

@@ -33,28 +33,18 @@ namespace FoslsContact
 
   namespace
   {
-    /**
-     * Put @p matrix on the pattern of its entries with |a_ij| >
-     * drop sqrt(|a_ii a_jj|) (drop = 0: its nonzero entries). The rule
-     * treats a_ij and a_ji alike, so the pattern stays symmetric unless
-     * one of them is within round-off of the threshold (measured on A: all
-     * entries are below 1e-15 or above 1e-8 of sqrt(a_ii a_jj); the patch
-     * coloring does not rely on symmetry either).
-     */
+    /** Put @p matrix on the pattern of its nonzero entries (and diagonal). */
     void
-    compress(SparseMatrix<double> &matrix, SparsityPattern &sparsity, const double drop)
+    compress(SparseMatrix<double> &matrix, SparsityPattern &sparsity)
     {
       const auto             n = matrix.m();
-      std::vector<double>    root_diagonal(n);
-      for (types::global_dof_index i = 0; i < n; ++i)
-        root_diagonal[i] = std::sqrt(std::abs(matrix.diag_element(i)));
       DynamicSparsityPattern dsp(n, n);
       std::vector<std::pair<types::global_dof_index, double>> entries;
       std::vector<std::size_t>                                row_end;
       for (types::global_dof_index i = 0; i < n; ++i)
         {
           for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
-            if (std::abs(e->value()) > drop * root_diagonal[i] * root_diagonal[e->column()])
+            if (e->value() != 0.)
               {
                 dsp.add(i, e->column());
                 entries.emplace_back(e->column(), e->value());
@@ -72,11 +62,36 @@ namespace FoslsContact
 
 
   void
+  zero_round_off(SparseMatrix<double> &matrix, const double drop)
+  {
+    // The rule treats a_ij and a_ji alike, so a symmetric pattern stays
+    // symmetric unless one of them is within round-off of the threshold
+    // (measured on A: all entries are below 1e-15 or above 1e-8 of
+    // sqrt(a_ii a_jj); the patch coloring does not rely on symmetry).
+    const auto          n = matrix.m();
+    std::vector<double> root_diagonal(n);
+    for (types::global_dof_index i = 0; i < n; ++i)
+      root_diagonal[i] = std::sqrt(std::abs(matrix.diag_element(i)));
+    parallel::apply_to_subranges(
+      types::global_dof_index(0),
+      types::global_dof_index(n),
+      [&](const types::global_dof_index begin, const types::global_dof_index end) {
+        for (auto i = begin; i < end; ++i)
+          for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
+            if (std::abs(e->value()) <= drop * root_diagonal[i] * root_diagonal[e->column()])
+              e->value() = 0.;
+      },
+      500);
+  }
+
+
+  void
   ConstrainedQP::compress_matrices()
   {
-    compress(matrix, sparsity, round_off_drop);
-    compress(matrix_eq, sparsity_eq, 0.);
-    compress(matrix_compl, sparsity_compl, 0.);
+    zero_round_off(matrix, round_off_drop);
+    compress(matrix, sparsity);
+    compress(matrix_eq, sparsity_eq);
+    compress(matrix_compl, sparsity_compl);
   }
 
 

@@ -3,8 +3,6 @@
 #include <deal.II/base/parallel.h>
 #include <deal.II/base/thread_local_storage.h>
 
-#include <cmath>
-
 namespace FoslsContact
 {
   void
@@ -32,8 +30,7 @@ namespace FoslsContact
   GalerkinProduct::compute(const SparseMatrix<double> &A,
                            const SparseMatrix<double> &P,
                            SparseMatrix<double> &      product,
-                           SparseMatrix<double> &      galerkin,
-                           const double                drop)
+                           SparseMatrix<double> &      galerkin)
   {
     // the values of P in the order of its pattern (global_index)
     const SparsityPattern &P_pattern = P.get_sparsity_pattern();
@@ -100,23 +97,6 @@ namespace FoslsContact
           }
       },
       100);
-
-    if (drop > 0)
-      {
-        std::vector<double> root_diagonal(n_coarse);
-        for (unsigned int j = 0; j < n_coarse; ++j)
-          root_diagonal[j] = std::sqrt(std::abs(galerkin.diag_element(j)));
-        parallel::apply_to_subranges(
-          0u,
-          n_coarse,
-          [&](const unsigned int begin, const unsigned int end) {
-            for (unsigned int j = begin; j < end; ++j)
-              for (auto e = galerkin.begin(j); e != galerkin.end(j); ++e)
-                if (std::abs(e->value()) <= drop * root_diagonal[j] * root_diagonal[e->column()])
-                  e->value() = 0.;
-          },
-          500);
-      }
   }
 
 

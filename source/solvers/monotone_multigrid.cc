@@ -126,8 +126,11 @@ namespace FoslsContact
         if (removed[e->column()])
           e->value() = 0;
 
-    galerkin_product[l].compute(
-      A, Pt, product[l], galerkin[l - 1], ConstrainedQP::round_off_drop);
+    galerkin_product[l].compute(A, Pt, product[l], galerkin[l - 1]);
+    // the couplings of coarse functions whose fine couplings cancel (a
+    // sixth of the product's nonzeros on the square) would lengthen the
+    // patch residuals and couple patches that are not coupled
+    zero_round_off(galerkin[l - 1], ConstrainedQP::round_off_drop);
     truncation_used[l] = truncated;
     version_used[l]    = version[l];
     reroute_used[l]    = reroute;

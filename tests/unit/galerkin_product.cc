@@ -12,8 +12,8 @@
 //    computed twice with different truncations, equals deal.II's product
 //    (into zeroed matrices) to round-off, with 1 and with 2 threads (and
 //    the same bits).
-//    With a drop tolerance, exactly the entries below it relative to the
-//    diagonal become 0.
+//    zero_round_off(drop) sets exactly the entries below drop relative to the
+//    diagonal to 0.
 // 3. PatchSmoother::color_patches keeps the order of every coupled pair of
 //    patches (level scheduling), so a smoothing step relaxed color by
 //    color in parallel gives the same bits as the sequential sweep over
@@ -25,6 +25,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 
+#include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/solvers/galerkin_product.h>
 #include <fosls_contact/solvers/patch_smoother.h>
 
@@ -136,14 +137,16 @@ main()
                    results.begin() + results.size() / 2),
         "the same bits with 1 and 2 threads");
 
-  // 2b. the drop rule: entries with |g_ij| <= drop sqrt(g_ii g_jj) become
-  // 0, the others are untouched (drop = 0.05 is far above round-off: it
-  // takes out the weak couplings of this matrix, to see the rule work)
+  // 2b. the drop rule (zero_round_off, applied to the Galerkin products):
+  // entries with |g_ij| <= drop sqrt(g_ii g_jj) become 0, the others are
+  // untouched (drop = 0.05 is far above round-off: it takes out the weak
+  // couplings of this matrix, to see the rule work)
   {
     Pt.copy_from(P);
     SparseMatrix<double> reference(galerkin_pattern);
     galerkin_product.compute(A, Pt, product, reference);
-    galerkin_product.compute(A, Pt, product, galerkin, 0.05);
+    galerkin_product.compute(A, Pt, product, galerkin);
+    zero_round_off(galerkin, 0.05);
     unsigned int n_dropped = 0, n_wrong = 0;
     for (unsigned int i = 0; i < galerkin.m(); ++i)
       for (auto e = galerkin.begin(i); e != galerkin.end(i); ++e)

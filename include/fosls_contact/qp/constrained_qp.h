@@ -27,6 +27,15 @@ namespace FoslsContact
   };
 
   /**
+   * Set the entries of @p matrix with |a_ij| <= drop sqrt(|a_ii a_jj|) to
+   * 0 (in parallel, by rows). With drop = ConstrainedQP::round_off_drop
+   * these are the entries that exact arithmetic makes zero: couplings that
+   * cancel in the assembly of A, or in a Galerkin product of it.
+   */
+  void zero_round_off(SparseMatrix<double> &matrix, const double drop);
+
+
+  /**
    * The seam of the program: a box-constrained quadratic problem
    *
    *   minimize J(x) = 1/2 x^T A x - b^T x + c

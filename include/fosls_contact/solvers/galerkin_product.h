@@ -35,19 +35,11 @@ namespace FoslsContact
      * DynamicSparsityPattern::compute_mmult_pattern and
      * compute_Tmmult_pattern do); @p P must have the pattern given to
      * initialize().
-     *
-     * Entries of galerkin with |g_ij| <= drop sqrt(|g_ii g_jj|) are set
-     * to 0: with drop = ConstrainedQP::round_off_drop, those that exact
-     * arithmetic makes zero (the coupling of coarse functions whose fine
-     * couplings cancel), which are a sixth of the product's nonzeros on the
-     * square and would make patch residuals longer and couple patches that
-     * are not coupled.
      */
     void compute(const SparseMatrix<double> &A,
                  const SparseMatrix<double> &P,
                  SparseMatrix<double> &      product,
-                 SparseMatrix<double> &      galerkin,
-                 const double                drop = 0.);
+                 SparseMatrix<double> &      galerkin);
 
     /**
      * dst = P^T src for the P of the last compute(), by columns of P in

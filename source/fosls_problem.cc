@@ -352,6 +352,13 @@ namespace FoslsContact
     summary["energy_increases"]      = std::to_string(monitor->energy_increases());
     summary["feasibility_dampings"]  = std::to_string(monitor->feasibility_dampings());
     summary["h_ratio_coarse"]        = number(discretization->coarse_mesh_ratio());
+    if (const auto *mg = dynamic_cast<const MonotoneMultigrid<dim> *>(solver.get()))
+      {
+        std::string colors = "[";
+        for (const unsigned int c : mg->n_patch_colors())
+          colors += (colors.size() > 1 ? ", " : "") + std::to_string(c);
+        summary["patch_colors"] = colors + "]";
+      }
     summary["time_setup_s"]          = number(time_setup);
     summary["time_solve_s"]          = number(time_solve);
     summary["peak_rss_mb"]           = number(memory.VmHWM / 1024.);

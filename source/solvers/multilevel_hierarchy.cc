@@ -3,10 +3,100 @@
 
 #include <fosls_contact/solvers/multilevel_hierarchy.h>
 
+#include <algorithm>
+#include <iterator>
 #include <set>
 
 namespace FoslsContact
 {
+  template <int dim>
+  bool
+  VertexKey<dim>::operator<(const VertexKey &other) const
+  {
+    if (creation_level != other.creation_level)
+      return creation_level < other.creation_level;
+    if (kind != other.kind)
+      return kind < other.kind;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (position[d] != other.position[d])
+        return position[d] < other.position[d];
+    return false;
+  }
+
+
+  template <int dim, typename CellIterator>
+  VertexKey<dim>
+  vertex_key(const CellIterator &cell, const unsigned int v)
+  {
+    VertexKey<dim> key;
+    key.position = cell->vertex(v);
+    // Walk up while the vertex is a vertex of the parent: child c of an
+    // isotropically refined cell has the parent's vertex c as its vertex
+    // c; its vertex v != c lies at the midpoint of the parent along the
+    // axes where the bits of c and v differ.
+    auto         c      = cell;
+    unsigned int vertex = v;
+    while (c->level() > 0)
+      {
+        const auto         parent = c->parent();
+        const unsigned int child  = parent->child_iterator_to_index(c);
+        if (vertex == child)
+          {
+            c = parent;
+            continue;
+          }
+        const unsigned int bits = child ^ vertex;
+        const unsigned int n    = __builtin_popcount(bits);
+        key.creation_level      = c->level();
+        if (n == dim)
+          {
+            key.kind = (dim - 1) * dim + 1; // cell center
+            return key;
+          }
+        // the parent line from vertex `child` along the one bit, or (3D)
+        // the normal of the parent face through `child` spanned by the two
+        // bits, as the cross product of its diagonals: the same vectors,
+        // up to sign, from every cell that shares the line or face
+        Tensor<1, dim> direction;
+        if (n == 1)
+          direction = parent->vertex(child ^ bits) - parent->vertex(child);
+        else
+          {
+            const unsigned int b1 = bits & (~bits + 1), b2 = bits ^ b1;
+            Tensor<1, 3>       d1, d2;
+            const auto         p1 = parent->vertex(child ^ bits) - parent->vertex(child);
+            const auto         p2 = parent->vertex(child ^ b1) - parent->vertex(child ^ b2);
+            for (unsigned int d = 0; d < dim; ++d)
+              d1[d] = p1[d], d2[d] = p2[d];
+            const Tensor<1, 3> normal = cross_product_3d(d1, d2);
+            for (unsigned int d = 0; d < dim; ++d)
+              direction[d] = normal[d];
+          }
+        unsigned int axis = 0;
+        for (unsigned int d = 1; d < dim; ++d)
+          if (std::abs(direction[d]) > std::abs(direction[axis]))
+            axis = d;
+        key.kind = (n - 1) * dim + 1 + axis;
+        return key;
+      }
+    return key; // a vertex of the coarse mesh
+  }
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  MultilevelHierarchy<dim>::level_schedule(
+    const std::vector<std::vector<unsigned int>> &coupled)
+  {
+    std::vector<unsigned int> color(coupled.size(), 0);
+    for (unsigned int p = 0; p < coupled.size(); ++p)
+      for (const unsigned int q : coupled[p])
+        if (q < p)
+          color[p] = std::max(color[p], color[q] + 1);
+    return color;
+  }
+
+
   namespace
   {
     /** The rotation R of a level as a sparse matrix (or its inverse). */
@@ -72,16 +162,20 @@ namespace FoslsContact
         R_fine_inverse.mmult(*rotated[l], tmp);
       }
 
-    // Vertex patches.
+    // Vertex patches, in the order of their VertexKey, and their colors.
     const auto &dof_handler = discretization.get_dof_handler();
+    level_colors.resize(n);
     for (unsigned int l = 0; l < n; ++l)
       {
         const auto &data = discretization.level(l);
         std::map<unsigned int, std::set<types::global_dof_index>> patch;
+        std::map<unsigned int, VertexKey<dim>>                     key;
         for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
           for (const unsigned int v : cell->vertex_indices())
             {
               auto &p = patch[cell->vertex_index(v)];
+              if (p.empty())
+                key[cell->vertex_index(v)] = vertex_key<dim>(cell, v);
               for (const auto dof : data.vertex_dofs.at(cell->vertex_index(v)))
                 p.insert(dof);
               for (const unsigned int f : cell->face_indices())
@@ -90,8 +184,28 @@ namespace FoslsContact
                     for (const auto dof : data.face_dofs.at(cell->face(f)->index()))
                       p.insert(dof);
             }
-        for (const auto &[vertex, dofs] : patch)
-          level_patches[l].emplace_back(dofs.begin(), dofs.end());
+        std::vector<std::pair<VertexKey<dim>, unsigned int>> order;
+        for (const auto &[vertex, k] : key)
+          order.emplace_back(k, vertex);
+        std::sort(order.begin(), order.end(), [](const auto &a, const auto &b) {
+          return a.first < b.first;
+        });
+        std::map<unsigned int, unsigned int> position;
+        for (const auto &[k, vertex] : order)
+          {
+            position[vertex] = level_patches[l].size();
+            const auto &dofs = patch[vertex];
+            level_patches[l].emplace_back(dofs.begin(), dofs.end());
+          }
+        // patches are coupled if their vertices share a cell
+        std::vector<std::vector<unsigned int>> coupled(order.size());
+        for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
+          for (const unsigned int v : cell->vertex_indices())
+            for (const unsigned int w : cell->vertex_indices())
+              if (v != w)
+                coupled[position[cell->vertex_index(v)]].push_back(
+                  position[cell->vertex_index(w)]);
+        level_colors[l] = level_schedule(coupled);
       }
 
     // Contact relations between level l-1 (coarse) and l (fine).
@@ -117,6 +231,34 @@ namespace FoslsContact
               frel.coarse_dof = coarse.face_dofs.at(face->index())[0];
               for (unsigned int c = 0; c < face->n_children(); ++c)
                 frel.sons.push_back(fine.face_dofs.at(face->child(c)->index())[0]);
+              {
+                // the DoFs of the children, minus those on the other faces
+                std::set<types::global_dof_index> all, other_faces;
+                for (unsigned int ch = 0; ch < cell->n_children(); ++ch)
+                  {
+                    const auto child = cell->child(ch);
+                    for (const unsigned int v : child->vertex_indices())
+                      for (const auto dof : fine.vertex_dofs.at(child->vertex_index(v)))
+                        all.insert(dof);
+                    for (const unsigned int cf : child->face_indices())
+                      for (const auto dof : fine.face_dofs.at(child->face(cf)->index()))
+                        all.insert(dof);
+                  }
+                for (const unsigned int g : cell->face_indices())
+                  if (g != f)
+                    for (unsigned int c = 0; c < cell->face(g)->n_children(); ++c)
+                      {
+                        const auto son = cell->face(g)->child(c);
+                        for (const unsigned int v : son->vertex_indices())
+                          for (const auto dof : fine.vertex_dofs.at(son->vertex_index(v)))
+                            other_faces.insert(dof);
+                        for (const auto dof : fine.face_dofs.at(son->index()))
+                          other_faces.insert(dof);
+                      }
+                std::set_difference(all.begin(), all.end(),
+                                    other_faces.begin(), other_faces.end(),
+                                    std::back_inserter(frel.inside));
+              }
               face_rel[l].push_back(frel);
 
               // coarse contact edges of this face (the face itself in 2D)
@@ -168,6 +310,8 @@ namespace FoslsContact
       }
   }
 
+  template struct VertexKey<2>;
+  template struct VertexKey<3>;
   template class MultilevelHierarchy<2>;
   template class MultilevelHierarchy<3>;
 } // namespace FoslsContact

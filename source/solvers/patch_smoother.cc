@@ -13,67 +13,17 @@ namespace FoslsContact
   {}
 
 
-  std::vector<unsigned int>
-  PatchSmoother::color_patches(
-    const SparseMatrix<double> &                              matrix,
-    const std::vector<std::vector<types::global_dof_index>> &patches)
-  {
-    // the patches of every DoF (compressed rows)
-    std::vector<unsigned int> first(matrix.m() + 1, 0);
-    for (const auto &patch : patches)
-      for (const auto dof : patch)
-        ++first[dof + 1];
-    for (unsigned int i = 0; i < matrix.m(); ++i)
-      first[i + 1] += first[i];
-    std::vector<unsigned int> owner(first.back());
-    {
-      std::vector<unsigned int> next(first.begin(), first.end() - 1);
-      for (unsigned int p = 0; p < patches.size(); ++p)
-        for (const auto dof : patches[p])
-          owner[next[dof]++] = p;
-    }
-
-    // Patches are colored in order. Patches p and q are coupled if one
-    // reads a DoF of the other through a nonzero entry. The nonzeros need
-    // not be symmetric (A and the Galerkin products are symmetric only to
-    // round-off, and entries at round-off level are dropped), so a patch
-    // also passes a lower bound on to the later patches it reads.
-    std::vector<unsigned int> color(patches.size(), 0), lower_bound(patches.size(), 0);
-    auto for_each_read = [&](const unsigned int p, const auto &f) {
-      for (const auto dof : patches[p])
-        for (auto e = matrix.begin(dof); e != matrix.end(dof); ++e)
-          if (e->value() != 0.)
-            for (unsigned int k = first[e->column()]; k < first[e->column() + 1]; ++k)
-              f(owner[k]);
-    };
-    for (unsigned int p = 0; p < patches.size(); ++p)
-      {
-        unsigned int c = lower_bound[p];
-        for_each_read(p, [&](const unsigned int q) {
-          if (q < p)
-            c = std::max(c, color[q] + 1);
-        });
-        color[p] = c;
-        for_each_read(p, [&](const unsigned int q) {
-          if (q > p)
-            lower_bound[q] = std::max(lower_bound[q], c + 1);
-        });
-      }
-    return color;
-  }
-
-
   void
   PatchSmoother::initialize_level(
     const unsigned int                                       l,
     const SparseMatrix<double> &                             matrix,
     const std::vector<std::vector<types::global_dof_index>> &patches,
+    const std::vector<unsigned int> &                        patch_color,
     const std::vector<DoFRole> &                             role)
   {
     Level &level = levels[l];
     level        = Level();
-    const std::vector<unsigned int> patch_color = color_patches(matrix, patches);
-    const unsigned int              n_colors =
+    const unsigned int n_colors =
       patches.empty() ? 0 : *std::max_element(patch_color.begin(), patch_color.end()) + 1;
 
     // Layout (serial): the patches in color order, each with the DoFs that
@@ -89,9 +39,17 @@ namespace FoslsContact
     level.row_start.push_back(0);
     level.color_start.push_back(0);
     std::vector<unsigned int> local(matrix.m(), numbers::invalid_unsigned_int);
+    // the patch of each DoF among the patches of the current color
+    std::vector<unsigned int> patch_of(matrix.m(), numbers::invalid_unsigned_int);
     unsigned int              n_qps = 0;
     for (const auto &color : by_color)
       {
+        // (only DoFs that move: reading a fixed DoF of another patch is
+        // harmless)
+        for (const unsigned int p : color)
+          for (const auto dof : patches[p])
+            if (role[dof] != DoFRole::fixed && matrix.diag_element(dof) > 0)
+              patch_of[dof] = p;
         for (const unsigned int p : color)
           {
             const auto   first       = level.neighbors.size();
@@ -112,6 +70,12 @@ namespace FoslsContact
                      ++e)
                   if (e->value() != 0.)
                     {
+                      // two patches of one color must not be coupled: they
+                      // are relaxed at the same time
+                      AssertThrow(patch_of[e->column()] == numbers::invalid_unsigned_int ||
+                                    patch_of[e->column()] == p,
+                                  ExcMessage("PatchSmoother: the matrix couples two "
+                                             "patches of one color"));
                       if (local[e->column()] == numbers::invalid_unsigned_int)
                         {
                           local[e->column()] = level.neighbors.size() - first;
@@ -134,6 +98,9 @@ namespace FoslsContact
             level.inverse_start.push_back(level.inverse_start.back() + n * (n + 1) / 2);
           }
         level.color_start.push_back(level.box_qp.size());
+        for (const unsigned int p : color)
+          for (const auto dof : patches[p])
+            patch_of[dof] = numbers::invalid_unsigned_int;
       }
 
     // Values (in parallel, patch by patch): the inverse of the patch

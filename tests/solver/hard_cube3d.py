@@ -27,6 +27,8 @@ for levels in [4, 5]:
     settings = ["Geometry/Levels=%d" % levels] + cheap_check
     run = R.run("prm/cube3d.prm", settings, "level_%d" % levels)
     check_flat_contact_run(run, 6, (2 ** (levels - 1) + 1) ** 2)
+    check(run["patch_colors"] == [8] * (levels - 1),
+          "8 patch colors on every level (uniform hexahedra)")
     f = run["contact_force"] or [0, 0, 0]
     print("contact force = %s" % " ".join(
         rounded(c, 6) if abs(c) > 1e-12 * (run.force or 1) else "0"

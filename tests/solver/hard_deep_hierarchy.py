@@ -6,7 +6,7 @@
 # 9-level run about 15 s (solve 8 s, peak memory 1.5 GB). (Until the
 # smoother read contiguous patch rows and the stopping rule knew the
 # round-off floor it took 62-150 s and was a "long" test.)
-# Checks per level: converged within 10 iterations (measured 4, 4, 4, 3;
+# Checks per level: converged within 10 iterations (measured 3, 4, 4, 3;
 # levels 8 and 9 end at the round-off floor), no NaN/Inf, energy_increases
 # == 0, every iterate feasible, KKT residual < 1e-10, all 2^(J-1) + 1
 # bottom vertices in contact. The force of 9 levels is checked against

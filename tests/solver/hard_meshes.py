@@ -11,8 +11,8 @@
 #    all cells have the same diameter), contact at the bottom, 3 and 4
 #    levels (1138 and 4194 DoFs), lambda = 1 and inf.
 # Default solver. Checks per run: converged within the stated bound
-# (graded: 25 iterations, measured 3-4 for ratios 3 and 7, 9 (lambda = 1)
-# and 7 (inf) for 30; anisotropic: 15, measured 4-5 on 3 and 4-5 on 4
+# (graded: 25 iterations, measured 3-4 for ratios 3 and 7, 8 (lambda = 1)
+# and 9 (inf) for 30; anisotropic: 15, measured 4-5 on 3 and 4-5 on 4
 # levels, with more CG steps per iteration on 4 levels: vertex-patch
 # smoothing is not robust for anisotropy), no NaN/Inf,
 # energy_increases == 0, feasible iterates, and the active set solver's KKT

@@ -4,7 +4,7 @@
 #  - C_eq = 1, 10, 1e2, 1e3, 1e4 (5 levels, C_const = 1, C_compl = 0.1):
 #    the default solver and the plain cycle (Krylov steps = 0) converge
 #    within the stated bounds (default 10 iterations, measured 3 and 8 for
-#    C_eq = 1e4; plain 20, measured 12-14) to the active set solver's KKT
+#    C_eq = 1e4; plain 20, measured 10-14) to the active set solver's KKT
 #    point: force to 1e-8 relative (measured <= 5.1e-10), J to
 #    max(1e-8, 1e-9 C_eq) (measured 2e-11 .. 6.8e-7: J is evaluated as
 #    1/2 x^T A x - b^T x + c, whose terms, and so its round-off, grow with

@@ -13,7 +13,9 @@
 # left: the bound is the issue's; level 3, with only 2 levels below it, is
 # the outlier) and 1 for lambda = inf. The square's contact set is found
 # by the coarse start, so the problem is linear after the first smoothing
-# (paper section 7).
+# (paper section 7). The patch order (MultilevelHierarchy, VertexKey)
+# puts the vertices of the uniformly refined square into 4 colors on every
+# level (old vertices, midpoints of x and of y lines, cell centers).
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
@@ -38,6 +40,8 @@ for lam in ["1", "inf"]:
               and run["kkt_residual"] < 1e-10,
               label + ": converged, KKT residual < 1e-10")
         check_monotone_feasible(run, label)
+        check(run["patch_colors"] == [4] * (levels - 1),
+              label + ": 4 patch colors on every level (MultilevelHierarchy)")
         iterations.append(run["iterations"] or 1000)
     print("iterations over levels 3..6: min %d, max %d"
           % (min(iterations), max(iterations)))

@@ -20,7 +20,7 @@
 # 0.01; measured: exactly 0). All runs stop after at most 30 iterations
 # except the default from the coarse start, which must converge (KKT
 # residual < 1e-10; measured 3-4 iterations). The plain cycle with
-# projection b must converge within 30 cycles (measured 11-13; before
+# projection b must converge within 30 cycles (measured 10-13; before
 # session 4 it did not on the tilted square, the half disc and the squares
 # from a zero start, because the Galerkin operators were summed up over
 # truncation changes, see tests/unit/galerkin_product), except on the half

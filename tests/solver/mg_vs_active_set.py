@@ -6,8 +6,8 @@
 # (prm/hertz.prm, 2 levels): relative difference of the contact force
 # vector and of J below 1e-8, KKT residual below 1e-8, the same number of
 # active constraints. Default solver (Krylov steps = 50) for all; the plain
-# cycle (Krylov steps = 0) only on the square (measured: 11 iterations at 4
-# levels for each projection; on the half disc it does not converge, see
+# cycle (Krylov steps = 0) only on the square (measured: 10 iterations at 3
+# and 13 at 4 levels for each projection; on the half disc it does not converge, see
 # known problem bug_plain_cycle_hertz).
 # Solver/Tolerance = 1e-10: the stopping criterion is a relative energy
 # correction, and with the default 1e-8 the force on the half disc agreed

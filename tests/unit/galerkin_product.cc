@@ -14,12 +14,13 @@
 //    the same bits).
 //    zero_round_off(drop) sets exactly the entries below drop relative to the
 //    diagonal to 0.
-// 3. PatchSmoother::color_patches keeps the order of every coupled pair of
-//    patches (level scheduling), so a smoothing step relaxed color by
-//    color in parallel gives the same bits as the sequential sweep over
-//    the patches in their order (checked against a hand-written
-//    sequential sweep on a 1D chain of overlapping patches), also where
-//    a coupling is a nonzero on one side only.
+// 3. MultilevelHierarchy::level_schedule keeps the order of every coupled
+//    pair of patches, so a smoothing step relaxed color by color in
+//    parallel gives the same bits as the sequential sweep over the patches
+//    in their order (checked against a hand-written sequential sweep on a
+//    1D chain of overlapping patches); PatchSmoother::initialize_level
+//    refuses colors under which the matrix couples two patches of one
+//    color, also where the coupling is a nonzero on one side only.
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
@@ -27,6 +28,7 @@
 
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/solvers/galerkin_product.h>
+#include <fosls_contact/solvers/multilevel_hierarchy.h>
 #include <fosls_contact/solvers/patch_smoother.h>
 
 #include "tests.h"
@@ -181,11 +183,16 @@ main()
   for (unsigned int k = patches.size() - 1; k + 1 > 0; --k)
     if (k % 5 == 4)
       ordered.push_back(patches[k]);
-  const auto color = PatchSmoother::color_patches(A, ordered);
   // patches starting at a and b are coupled if |a - b| <= 4
   std::vector<unsigned int> position(patches.size());
   for (unsigned int p = 0; p < ordered.size(); ++p)
     position[ordered[p][0]] = p;
+  std::vector<std::vector<unsigned int>> coupled(ordered.size());
+  for (unsigned int a = 0; a < patches.size(); ++a)
+    for (unsigned int b = 0; b < patches.size(); ++b)
+      if (a != b && a + 4 >= b && b + 4 >= a)
+        coupled[position[a]].push_back(position[b]);
+  const auto color = MultilevelHierarchy<2>::level_schedule(coupled);
   bool order_kept = true;
   for (unsigned int a = 0; a < patches.size(); ++a)
     for (unsigned int b = a + 1; b < std::min<unsigned int>(patches.size(), a + 5); ++b)
@@ -197,19 +204,35 @@ main()
   std::cout << "colors of " << ordered.size() << " patches: "
             << *std::max_element(color.begin(), color.end()) + 1 << std::endl;
 
-  // nonzeros that are not symmetric (an entry dropped on one side only):
-  // patch {0} reads DoF 1 of the later patch {1} (a_01 != 0), which does
-  // not read DoF 0 (a_10 = 0); they must still get different colors
-  {
-    DynamicSparsityPattern dsp(2, 2);
-    dsp.add(0, 0), dsp.add(0, 1), dsp.add(1, 0), dsp.add(1, 1);
-    SparsityPattern pattern;
-    pattern.copy_from(dsp);
-    SparseMatrix<double> B(pattern);
-    B.set(0, 0, 2.), B.set(1, 1, 2.), B.set(0, 1, -1.);
-    const auto c = PatchSmoother::color_patches(B, {{0}, {1}});
-    check(c[1] > c[0], "level scheduling with one-sided nonzeros keeps the order");
-  }
+  // two patches of one color that the matrix couples are refused, also by
+  // a nonzero on one side only (an entry dropped on one side): patch {0}
+  // reads DoF 1 of patch {1} (a_01 != 0), which does not read DoF 0
+  for (const unsigned int first : {0u, 1u})
+    {
+      DynamicSparsityPattern dsp(2, 2);
+      dsp.add(0, 0), dsp.add(0, 1), dsp.add(1, 0), dsp.add(1, 1);
+      SparsityPattern pattern;
+      pattern.copy_from(dsp);
+      SparseMatrix<double> B(pattern);
+      B.set(0, 0, 2.), B.set(1, 1, 2.), B.set(0, 1, -1.);
+      PatchSmoother smoother(1);
+      const std::vector<std::vector<types::global_dof_index>> two =
+        first == 0 ? std::vector<std::vector<types::global_dof_index>>{{0}, {1}} :
+                     std::vector<std::vector<types::global_dof_index>>{{1}, {0}};
+      bool refused = false;
+      try
+        {
+          smoother.initialize_level(0, B, two, {0, 0}, {DoFRole::free, DoFRole::free});
+        }
+      catch (const ExceptionBase &)
+        {
+          refused = true;
+        }
+      check(refused, "coupled patches in one color are refused (patch order " +
+                       std::to_string(first) + ", 1)");
+      smoother.initialize_level(0, B, two, {0, 1}, {DoFRole::free, DoFRole::free});
+      check(smoother.n_colors(0) == 2, "and accepted in two colors");
+    }
 
   // the colored sweep against a sequential one, forward and backward
   std::vector<DoFRole> role(n, DoFRole::free);
@@ -224,7 +247,7 @@ main()
         {
           MultithreadInfo::set_thread_limit(threads);
           PatchSmoother smoother(1);
-          smoother.initialize_level(0, A, ordered, role);
+          smoother.initialize_level(0, A, ordered, color, role);
           smoother.set_obstacles(0, ub);
           smoother.set_backward(backward);
           smoother.set_steps(2);

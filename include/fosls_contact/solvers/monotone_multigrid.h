@@ -74,6 +74,13 @@ namespace FoslsContact
                Vector<double> &     x,
                Monitor &            monitor) override;
 
+    /**
+     * The number of patch colors of levels 1..finest (MultilevelHierarchy::
+     * patch_colors()): the barriers of the threads, and later the ghost
+     * exchanges, of one smoothing step per level.
+     */
+    std::vector<unsigned int> n_patch_colors() const;
+
     /** Time smoothing, Galerkin operators and coarse solves in @p timer. */
     void set_timer(TimerOutput &timer) { this->timer = &timer; }
 
@@ -126,7 +133,10 @@ namespace FoslsContact
      * truncated, give the free sons the flux the truncated ones lost and
      * restore the balance of the fine cells at the sons by a local
      * correction: the change d of the face's column (at its sons) is
-     * extended to the free, unbounded DoFs coupled to the sons by A,
+     * extended to the free, unbounded DoFs coupled to the sons by A inside
+     * the coarse cell (FaceRelation::inside: the column stays inside the
+     * cell, so the Galerkin operator stays on the coupling pattern of the
+     * coarse cells, which the patch colors rely on),
      * minimizing (d + e)^T A (d + e), so that the column stays nearly
      * divergence free. (A column cut at a son has a divergence of order
      * 1/h in the son's cell: measured 859 vs 0.007 in energy on the half

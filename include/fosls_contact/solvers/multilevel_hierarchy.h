@@ -33,7 +33,44 @@ namespace FoslsContact
   {
     types::global_dof_index              coarse_dof;
     std::vector<types::global_dof_index> sons;
+    /**
+     * The fine DoFs of the coarse cell's children that do not lie on one
+     * of its other faces (sorted): the DoFs the flux rerouting may use, so
+     * that the rerouted column stays inside the coarse cell and the
+     * Galerkin operator on the coarse coupling pattern.
+     */
+    std::vector<types::global_dof_index> inside;
   };
+
+  /**
+   * The place of a vertex in the patch order of a level: the level on
+   * which it first appears, what created it there (a vertex of the coarse
+   * mesh, the midpoint of a parent line, the center of a parent face or
+   * cell; lines by the axis they run along, faces by the axis of their
+   * normal) and, within that, its position.
+   *
+   * In this order the vertices of each kind are pairwise not vertices of
+   * a common cell on a uniformly refined mesh (each cell has exactly one
+   * vertex of every kind), so the patches of one kind are independent
+   * and the level scheduling of the order needs 2^dim colors: the old
+   * vertices, the midpoints of lines along x, along y (, z), (the face
+   * centers by normal,) the cell centers. Only geometry enters, so every
+   * process of a distributed mesh computes the same key for a vertex from
+   * any cell that contains it.
+   */
+  template <int dim>
+  struct VertexKey
+  {
+    unsigned int creation_level = 0;
+    unsigned int kind           = 0;
+    Point<dim>   position;
+
+    bool operator<(const VertexKey &other) const;
+  };
+
+  /** The key of vertex @p v of @p cell (VertexKey). */
+  template <int dim, typename CellIterator>
+  VertexKey<dim> vertex_key(const CellIterator &cell, const unsigned int v);
 
   /**
    * Everything the monotone multilevel method needs to know about the
@@ -64,11 +101,36 @@ namespace FoslsContact
     {
       return *rotated[l];
     }
+    /**
+     * The Arnold-Falk-Winther vertex patches of level @p l (each sorted),
+     * in the order of their vertices' VertexKey.
+     */
     const std::vector<std::vector<types::global_dof_index>> &
     patches(const unsigned int l) const
     {
       return level_patches[l];
     }
+    /**
+     * The color of every patch of level @p l: the level scheduling of the
+     * patch order over the coupling of patches whose vertices share a
+     * cell of the level. Relaxing color by color keeps the order of every
+     * pair of patches the matrix of the level can couple (its entries lie
+     * on the coupling pattern of the level's cells: the Galerkin operators
+     * too, see MonotoneMultigrid), so the colored sweep is the sequential
+     * sweep in patch order.
+     */
+    const std::vector<unsigned int> &patch_colors(const unsigned int l) const
+    {
+      return level_colors[l];
+    }
+
+    /**
+     * Level scheduling: item p gets the color 1 + the largest color of the
+     * items q < p in @p coupled[p] (0 if there is none). @p coupled lists,
+     * for every item, the items coupled with it (either order).
+     */
+    static std::vector<unsigned int>
+    level_schedule(const std::vector<std::vector<unsigned int>> &coupled);
     /** Relations of coarse level @p l - 1 to fine level @p l. */
     const std::vector<VertexRelation> &vertex_relations(const unsigned int l) const
     {
@@ -85,6 +147,7 @@ namespace FoslsContact
     std::vector<std::unique_ptr<SparsityPattern>>      rotated_sparsity;
     std::vector<std::unique_ptr<SparseMatrix<double>>> rotated;
     std::vector<std::vector<std::vector<types::global_dof_index>>> level_patches;
+    std::vector<std::vector<unsigned int>>                           level_colors;
     std::vector<std::vector<VertexRelation>> vertex_rel;
     std::vector<std::vector<FaceRelation>>   face_rel;
   };

@@ -27,16 +27,17 @@ namespace FoslsContact
    * changes, i.e. when the truncation changes.
    *
    * The sweep is the sequential one in the order of the hierarchy's
-   * patches (vertex order; backward for post-smoothing), run in parallel
-   * without changing a bit of it: the patches are put into "colors" by
-   * level scheduling (color_patches()), so that two patches coupled by the
-   * matrix keep their order, and the patches of one color, which are
-   * independent, are relaxed concurrently by the threads of
-   * MultithreadInfo. The iterates are therefore the same for any number of
-   * threads, and the same as those of the serial sweep. (A greedy coloring
-   * with the fewest colors, i.e. a multicolor Gauss-Seidel order, was
-   * measured too: plain V(3,3) on the square, lambda = 1, asymptotic rate
-   * 0.67-0.71 instead of 0.27-0.35 in vertex order.)
+   * patches (MultilevelHierarchy::patches(): backward for post-smoothing),
+   * run in parallel without changing a bit of it: the patches come with
+   * colors (MultilevelHierarchy::patch_colors(), the level scheduling of
+   * that order), two patches the matrix couples keep their order, and the
+   * patches of one color, which are independent, are relaxed concurrently
+   * by the threads of MultithreadInfo. The iterates are therefore the
+   * same for any number of threads, and the same as those of the serial
+   * sweep. initialize_level() refuses a matrix that couples two patches of
+   * one color. (A greedy coloring with the fewest colors, i.e. a
+   * multicolor Gauss-Seidel order, was measured too: plain V(3,3) on the
+   * square, lambda = 1, asymptotic rate 0.67-0.71 instead of 0.27-0.35.)
    */
   class PatchSmoother : public MGSmoother<Vector<double>>
   {
@@ -52,6 +53,7 @@ namespace FoslsContact
     void initialize_level(const unsigned int                                      l,
                           const SparseMatrix<double> &                            matrix,
                           const std::vector<std::vector<types::global_dof_index>> &patches,
+                          const std::vector<unsigned int> &                       colors,
                           const std::vector<DoFRole> &                            role);
 
     /**
@@ -91,25 +93,6 @@ namespace FoslsContact
     {
       return levels[l].color_start.empty() ? 0 : levels[l].color_start.size() - 1;
     }
-
-    /**
-     * Level scheduling of the sequential patch order: patch p gets the
-     * color 1 + the largest color of the patches before it that it is
-     * coupled with by a nonzero entry of @p matrix (a DoF of one is a
-     * column of a row of the other's, in either direction: the nonzeros
-     * need not be symmetric), 0 if there is none. Relaxing color
-     * by color then keeps the order of every coupled pair, which is all
-     * that the result of a Gauss-Seidel sweep depends on. Returns the color
-     * of every patch.
-     *
-     * The nonzeros, not the pattern: the pattern of a Galerkin product
-     * holds every entry any truncation can produce, and coloring by it
-     * gave 69 colors at level 8 of the square against 6 at level 9 (each
-     * color is a barrier of the threads in every sweep).
-     */
-    static std::vector<unsigned int>
-    color_patches(const SparseMatrix<double> &                              matrix,
-                  const std::vector<std::vector<types::global_dof_index>> &patches);
 
   private:
     /**

@@ -5,14 +5,15 @@
  *
  *   fosls-contact SCENE.prm [--set "Section/Name=value" ...]
  *
+ *   mpirun -np N fosls-contact SCENE.prm [...]
+ *
  * main() only reads the parameters and hands them to FoslsProblem; every
  * error ends in one line on stderr and exit code 1, before any output file
  * is written.
  *
- * The program runs on one MPI rank and uses the cores of the machine with
- * threads (Solver/Threads). Started by mpirun on more ranks it stops with
- * that error: every rank would otherwise solve the whole problem and write
- * the same files at the same time.
+ * The program runs on every process of MPI_COMM_WORLD (one, or those
+ * mpirun starts), each using its share of the machine's cores with
+ * threads (Solver/Threads).
  */
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/multithread_info.h>
@@ -23,7 +24,9 @@
 #include <fosls_contact/fosls_problem.h>
 #include <fosls_contact/parameters.h>
 
+#include <chrono>
 #include <filesystem>
+#include <thread>
 #include <iostream>
 #include <sstream>
 
@@ -57,6 +60,47 @@ namespace
           space = false;
         }
     return out;
+  }
+
+  /**
+   * End the program after an error with @p line: with one process, print
+   * it and return 1. With several, the processes that fail agree on a
+   * separate communicator: if all of them failed (an error every process
+   * meets: bad input, a bad scene), the first prints the line and all
+   * return 1; if some did not come within 10 s (they wait in a collective
+   * operation: an error of one process), this one prints its line and
+   * aborts the run.
+   */
+  int
+  stop_with_error(const std::string &line, const MPI_Comm error_comm)
+  {
+    int n_processes = 1, rank = 0;
+    MPI_Comm_size(error_comm, &n_processes);
+    MPI_Comm_rank(error_comm, &rank);
+    if (n_processes == 1)
+      {
+        std::cerr << line << std::endl;
+        return 1;
+      }
+    MPI_Request request;
+    MPI_Ibarrier(error_comm, &request);
+    int        done = 0;
+    const auto start = std::chrono::steady_clock::now();
+    while (!done && std::chrono::steady_clock::now() - start < std::chrono::seconds(10))
+      {
+        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+        if (!done)
+          std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      }
+    if (done)
+      {
+        if (rank == 0)
+          std::cerr << line << std::endl;
+        return 1;
+      }
+    std::cerr << line << std::endl;
+    MPI_Abort(MPI_COMM_WORLD, 1);
+    return 1;
   }
 
   /** Apply one --set "Section/Subsection/Name=value". */
@@ -109,16 +153,12 @@ main(int argc, char *argv[])
   dealii::deal_II_exceptions::disable_abort_on_exception();
   dealii::deal_II_exceptions::suppress_stacktrace_in_exceptions();
 
+  MPI_Comm error_comm;
+  MPI_Comm_dup(MPI_COMM_WORLD, &error_comm);
   const bool  first_rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   std::string where      = "command line";
   try
     {
-      const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-      AssertThrow(n_ranks == 1,
-                  dealii::ExcMessage("started on " + std::to_string(n_ranks) +
-                                     " MPI ranks, but fosls-contact runs on one rank "
-                                     "and uses the cores with threads (Solver/Threads): "
-                                     "start it without mpirun"));
       std::string              file;
       std::vector<std::string> overrides;
       for (int i = 1; i < argc; ++i)
@@ -139,14 +179,19 @@ main(int argc, char *argv[])
               // doc/parameters.md
               dealii::ParameterHandler prm;
               Parameters::AllParameters::declare_parameters(prm);
-              prm.print_parameters(std::cout, dealii::ParameterHandler::JSON);
+              if (first_rank)
+                prm.print_parameters(std::cout, dealii::ParameterHandler::JSON);
+              MPI_Comm_free(&error_comm);
               return 0;
             }
           else if (arg == "--help" || arg == "-h")
             {
-              std::cout << "usage: fosls-contact SCENE.prm [--set "
-                           "\"Section/Name=value\" ...]\n"
-                           "       fosls-contact --print-parameters\n";
+              if (first_rank)
+                std::cout << "usage: fosls-contact SCENE.prm [--set "
+                             "\"Section/Name=value\" ...]\n"
+                             "       mpirun -np N fosls-contact SCENE.prm [...]\n"
+                             "       fosls-contact --print-parameters\n";
+              MPI_Comm_free(&error_comm);
               return 0;
             }
           else
@@ -190,17 +235,13 @@ main(int argc, char *argv[])
     }
   catch (const std::exception &exc)
     {
-      // every rank meets the same error: one line from the first
-      if (first_rank)
-        std::cerr << "fosls-contact: error in " << where << ": " << one_line(exc)
-                  << std::endl;
-      return 1;
+      return stop_with_error("fosls-contact: error in " + where + ": " + one_line(exc),
+                             error_comm);
     }
   catch (...)
     {
-      if (first_rank)
-        std::cerr << "fosls-contact: unknown error in " << where << std::endl;
-      return 1;
+      return stop_with_error("fosls-contact: unknown error in " + where, error_comm);
     }
+  MPI_Comm_free(&error_comm);
   return 0;
 }

@@ -1,13 +1,17 @@
 #!/usr/bin/env python3
-"""Threads: strong scaling (1 and 2 threads, same problem), memory per DoF,
-and the 3D run of more than a million DoFs (issue "Distributed runs",
-items 6, 7 and 9). Runs one case at a time and writes
+"""MPI processes and threads: strong scaling (1 process x 1 thread, 1 x 2,
+2 x 1 on the same problem), weak scaling (the problem doubled with the
+processes), memory per DoF, the communication per cycle, and the 3D run of
+more than a million DoFs on two processes (issue "Distributed runs", items
+5, 6, 7 and 9). Runs one case at a time (the machine has 2 cores) and writes
 doc/parallel_results.md (generated; doc/parallel.md explains it).
 
-    bench/parallel.py            # about 10 minutes on 2 cores, 13 GB peak
+    bench/parallel.py            # about 15 minutes on 2 cores, 12 GB peak
 """
 import json
+import math
 import os
+import shutil
 import subprocess
 import sys
 import time
@@ -16,29 +20,44 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BIN = os.path.join(ROOT, "build", "fosls-contact")
 RES = os.path.join(ROOT, "bench", "results", "parallel")
 OUT = os.path.join(ROOT, "doc", "parallel_results.md")
+MPIRUN = shutil.which("mpirun") or "mpirun"
 
-CASES = [
-    # (name, scene, settings, thread counts)
-    ("square, 9 levels", "square.prm", {"Geometry/Levels": "9"}, [1, 2]),
-    ("cube, 6 levels", "cube3d.prm", {"Geometry/Levels": "6"}, [1, 2]),
-    ("3D Hertz ball, 5 levels", "ball3d.prm", {"Geometry/Levels": "5"}, [1, 2]),
-    ("cube 3x3x3 coarse cells, 5 levels", "cube3d.prm",
-     {"Geometry/Levels": "5", "Geometry/Box subdivisions": "3, 3, 3"}, [2]),
+# (name, scene, settings); every case is run as 1 process x 1 thread,
+# 1 process x 2 threads and 2 processes x 1 thread
+STRONG = [
+    ("square, 9 levels", "square.prm", {"Geometry/Levels": "9"}),
+    ("cube, 6 levels", "cube3d.prm", {"Geometry/Levels": "6"}),
+    ("3D Hertz ball, 5 levels", "ball3d.prm", {"Geometry/Levels": "5"}),
 ]
+CONFIGURATIONS = [(1, 1), (1, 2), (2, 1)]
+# weak scaling: the domain (and the coarse mesh) doubled in x for 2 processes
+WEAK = [
+    ("square, 8 levels", "square.prm", {"Geometry/Levels": "8"},
+     {"Geometry/Box upper corner": "2, 1", "Geometry/Box subdivisions": "2, 1"}),
+    ("cube, 5 levels", "cube3d.prm", {"Geometry/Levels": "5"},
+     {"Geometry/Box upper corner": "2, 1, 1", "Geometry/Box subdivisions": "2, 1, 1"}),
+]
+MILLION = ("cube 3x3x3 coarse cells, 5 levels", "cube3d.prm",
+           {"Geometry/Levels": "5", "Geometry/Box subdivisions": "3, 3, 3"})
 PHASES = [("Assembly", "assembly"), ("Setup: solver", "solver set-up"),
           ("Solve: smoothing", "smoothing"),
           ("Solve: Galerkin operators and patch setup", "Galerkin + patch set-up"),
+          ("Solve: coarse solve", "coarse solve"),
           ("Solve", "solve")]
 
 
-def run(scene, settings, threads, out):
+def run(scene, settings, processes, threads, out):
     cmd = [BIN, os.path.join(ROOT, "prm", scene), "--set", f"Output/Directory={out}",
            "--set", "Output/Write vtu=false", "--set", "Output/Verbose=false",
            "--set", f"Solver/Threads={threads}"]
+    if processes > 1:
+        cmd = [MPIRUN, "--oversubscribe", "-np", str(processes)] + cmd
     for k, v in settings.items():
         cmd += ["--set", f"{k}={v}"]
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               DEAL_II_NUM_THREADS=str(threads))
     t = time.time()
-    p = subprocess.run(cmd, capture_output=True, text=True)
+    p = subprocess.run(cmd, capture_output=True, text=True, env=env)
     wall = time.time() - t
     if p.returncode != 0:
         sys.exit(f"failed: {' '.join(cmd)}\n{p.stderr}")
@@ -48,54 +67,111 @@ def run(scene, settings, threads, out):
     return s
 
 
+def label(processes, threads):
+    return f"{processes} x {threads}"
+
+
+def relative(a, b):
+    fa, fb = a["contact_force"], b["contact_force"]
+    return math.sqrt(sum((x - y) ** 2 for x, y in zip(fa, fb))) / \
+        math.sqrt(sum(y * y for y in fb))
+
+
 def main():
     if not os.path.exists(BIN):
         sys.exit("build/fosls-contact missing: run scripts/setup.sh")
     os.makedirs(RES, exist_ok=True)
-    lines = ["# Threads: measured results", "",
+    results = []
+
+    def record(name, scene, settings, processes, threads):
+        out = os.path.join(RES, f"{len(results):02d}_p{processes}_t{threads}")
+        s = run(scene, settings, processes, threads, out)
+        s.update(name=name, processes=processes, threads=threads)
+        results.append(s)
+        print(f"{name}, {label(processes, threads)}: {s['dofs']} DoFs, "
+              f"{s['iterations']} iterations, {s['cycles']} cycles, solve "
+              f"{s['time_solve_s']:.2f} s, wall {s['wall_s']:.1f} s, peak "
+              f"{s['peak_rss_mb'] / 1024:.2f} GB", flush=True)
+        return s
+
+    strong = {}
+    for name, scene, settings in STRONG:
+        for p, t in CONFIGURATIONS:
+            strong[(name, p, t)] = record(name, scene, settings, p, t)
+    weak = {}
+    for name, scene, settings, doubled in WEAK:
+        weak[(name, 1)] = record(name + ", 1 x 1 domain", scene, settings, 1, 1)
+        weak[(name, 2)] = record(name + ", 2 x 1 domain", scene,
+                                 dict(settings, **doubled), 2, 1)
+    million = record(MILLION[0], MILLION[1], MILLION[2], 2, 1)
+
+    lines = ["# Processes and threads: measured results", "",
              "<!-- generated by bench/parallel.py; do not edit by hand -->", "",
              f"Generated {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())} on this "
-             f"machine ({os.cpu_count()} cores), one case at a time. Times in seconds "
-             "(TimerOutput sections of `summary.json`); 'speed-up' = 1 thread / 2 threads.", ""]
-    results = {}
-    for name, scene, settings, counts in CASES:
-        for t in counts:
-            out = os.path.join(RES, f"{name.split(',')[0].split()[0]}_{len(results)}_t{t}")
-            s = run(scene, settings, t, out)
-            results[(name, t)] = s
-            print(f"{name}, {t} thread(s): {s['dofs']} DoFs, {s['iterations']} iterations, "
-                  f"{s['cycles']} cycles, solve {s['time_solve_s']:.2f} s, wall "
-                  f"{s['wall_s']:.1f} s, peak {s['peak_rss_mb'] / 1024:.2f} GB", flush=True)
+             f"machine ({os.cpu_count()} cores), one case at a time. 'p x t' = MPI "
+             "processes x threads per process. Times in seconds (TimerOutput sections "
+             "of `summary.json`, those of the first process); peak memory is the sum "
+             "over the processes.", ""]
 
-    lines += ["## Strong scaling: 1 and 2 threads", "",
-              "| case | DoFs | iterations (1 / 2 threads) | " +
-              " | ".join(f"{label} 1 / 2 threads" for _, label in PHASES) +
-              " | speed-up of the solve | wall 1 / 2 threads |",
-              "|" + "---|" * (5 + len(PHASES))]
-    for name, _, _, counts in CASES:
-        if counts != [1, 2]:
-            continue
-        a, b = results[(name, 1)], results[(name, 2)]
-        cells = [f"{a['time_sections_s'].get(k, 0):.2f} / {b['time_sections_s'].get(k, 0):.2f}"
-                 for k, _ in PHASES]
-        lines.append(f"| {name} | {a['dofs']} | {a['iterations']} / {b['iterations']} | " +
-                     " | ".join(cells) +
-                     f" | {a['time_solve_s'] / b['time_solve_s']:.2f} | "
-                     f"{a['wall_s']:.1f} / {b['wall_s']:.1f} |")
-    lines += ["", "The results agree between the thread counts: relative difference of the "
-              "contact force " + ", ".join(
-                  f"{name}: {abs(results[(name, 1)]['contact_force'][-1] - results[(name, 2)]['contact_force'][-1]) / abs(results[(name, 2)]['contact_force'][-1]):.1e}"
-                  for name, _, _, counts in CASES if counts == [1, 2]) + ".", ""]
-
-    lines += ["## Memory per DoF and the million-DoF run", "",
-              "| case | threads | DoFs | iterations | cycles | solve s | wall s | peak GB | KB per DoF | contact force (normal) |",
-              "|---|---|---|---|---|---|---|---|---|---|"]
-    for (name, t), s in results.items():
-        lines.append(f"| {name} | {t} | {s['dofs']} | {s['iterations']} | {s['cycles']} | "
-                     f"{s['time_solve_s']:.1f} | {s['wall_s']:.1f} | "
-                     f"{s['peak_rss_mb'] / 1024:.2f} | {s['peak_rss_mb'] * 1024 / s['dofs']:.1f} | "
-                     f"{s['contact_force'][-1]:.6e} |")
+    lines += ["## Strong scaling: the same problem on 1 x 1, 1 x 2 and 2 x 1", "",
+              "| case | DoFs | p x t | iterations | cycles | " +
+              " | ".join(l for _, l in PHASES) +
+              " | speed-up of the solve vs 1 x 1 | wall | |F - F(1 x 1)| / |F| |",
+              "|" + "---|" * (8 + len(PHASES))]
+    for name, _, _ in STRONG:
+        base = strong[(name, 1, 1)]
+        for p, t in CONFIGURATIONS:
+            s = strong[(name, p, t)]
+            cells = [f"{s['time_sections_s'].get(k, 0):.2f}" for k, _ in PHASES]
+            lines.append(f"| {name} | {s['dofs']} | {label(p, t)} | {s['iterations']} | "
+                         f"{s['cycles']} | " + " | ".join(cells) +
+                         f" | {base['time_solve_s'] / s['time_solve_s']:.2f} | "
+                         f"{s['wall_s']:.1f} | {relative(s, base):.1e} |")
     lines.append("")
+
+    lines += ["## Weak scaling: twice the DoFs on twice the processes", "",
+              "The domain (and its coarse mesh) doubled in x for 2 processes, the "
+              "mesh size the same; efficiency = time per cycle of 1 process / time "
+              "per cycle of 2 processes (1 is perfect).", "",
+              "| case | p x t | DoFs | DoFs per process | iterations | cycles | solve s | "
+              "solve s per cycle | efficiency per cycle | wall s |",
+              "|---|---|---|---|---|---|---|---|---|---|"]
+    for name, _, _, _ in WEAK:
+        a = weak[(name, 1)]
+        for p in (1, 2):
+            s = weak[(name, p)]
+            per_cycle = s["time_solve_s"] / s["cycles"]
+            eff = (a["time_solve_s"] / a["cycles"]) / per_cycle
+            lines.append(f"| {s['name']} | {label(p, 1)} | {s['dofs']} | {s['dofs'] // p} | "
+                         f"{s['iterations']} | {s['cycles']} | {s['time_solve_s']:.2f} | "
+                         f"{per_cycle:.3f} | {eff:.2f} | {s['wall_s']:.1f} |")
+    lines.append("")
+
+    lines += ["## Memory per DoF and communication per cycle", "",
+              "Exchanges: point-to-point exchanges of the busiest process during the "
+              "solve (ghost updates, ghost parts to their owners, imported matrix "
+              "entries, Galerkin parts); values: doubles sent by all processes; both "
+              "per multigrid cycle (summary.json `solve_exchanges`, "
+              "`solve_values_sent`, `cycles`).", "",
+              "| case | p x t | DoFs | iterations | cycles | solve s | wall s | peak GB "
+              "(all) | peak GB per process | KB per DoF | exchanges per cycle | "
+              "values per cycle | ghost DoFs on the finest level | contact force (normal) |",
+              "|" + "---|" * 14]
+    for s in results:
+        cycles = max(s["cycles"], 1)
+        lines.append(
+            f"| {s['name']} | {label(s['processes'], s['threads'])} | {s['dofs']} | "
+            f"{s['iterations']} | {s['cycles']} | {s['time_solve_s']:.1f} | "
+            f"{s['wall_s']:.1f} | {s['peak_rss_mb'] / 1024:.2f} | "
+            f"{s['peak_rss_mb_per_process'] / 1024:.2f} | "
+            f"{s['peak_rss_mb'] * 1024 / s['dofs']:.1f} | "
+            f"{s['solve_exchanges'] / cycles:.0f} | {s['solve_values_sent'] / cycles:.0f} | "
+            f"{s['ghost_dofs_per_level'][-1]} | {s['contact_force'][-1]:.6e} |")
+    lines += ["", f"The million-DoF run: {million['dofs']} DoFs on 2 processes, "
+              f"{million['iterations']} iterations ({million['cycles']} cycles), solve "
+              f"{million['time_solve_s']:.1f} s, wall {million['wall_s']:.1f} s, peak "
+              f"{million['peak_rss_mb'] / 1024:.2f} GB "
+              f"({million['peak_rss_mb_per_process'] / 1024:.2f} GB per process).", ""]
     with open(OUT, "w") as f:
         f.write("\n".join(lines))
     print(f"wrote {OUT}")

@@ -1,10 +1,12 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/utilities.h>
 
 #include <fosls_contact/assembly/fosls_assembler.h>
 #include <fosls_contact/fosls_problem.h>
 #include <fosls_contact/output/postprocessor.h>
 #include <fosls_contact/qp/definiteness_check.h>
+#include <fosls_contact/qp/gathered_qp.h>
 #include <fosls_contact/solvers/active_set_direct.h>
 #include <fosls_contact/solvers/monotone_multigrid.h>
 #include <fosls_contact/solvers/projected_gauss_seidel.h>
@@ -61,23 +63,35 @@ namespace FoslsContact
   {
     TimerOutput::Scope t(timer, "Setup: mesh, DoFs, levels");
     Timer              wall;
-    discretization =
-      std::make_unique<Discretization<dim>>(scene, parameters.geometry.levels);
+    discretization = std::make_unique<Discretization<dim>>(scene,
+                                                          parameters.geometry.levels,
+                                                          MPI_COMM_WORLD);
     transfer = std::make_unique<LevelTransfer<dim>>(*discretization);
     time_setup += wall.wall_time();
 
-    const auto &fine = discretization->level(discretization->finest_level());
+    const auto &   fine = discretization->level(discretization->finest_level());
+    const MPI_Comm comm = discretization->get_communicator();
     pcout << "Scene: " << dim << "D, " << discretization->n_levels()
-          << " levels, " << discretization->get_triangulation().n_active_cells()
-          << " cells, " << fine.n_dofs << " DoFs on the finest level"
-          << std::endl
+          << " levels, " << discretization->get_triangulation().n_global_active_cells()
+          << " cells, " << fine.n_dofs << " DoFs on the finest level" << std::endl
           << "       coarse mesh h_max/h_min = " << std::fixed
           << std::setprecision(4) << discretization->coarse_mesh_ratio()
           << std::defaultfloat << std::endl;
+    const unsigned int n_processes = Utilities::MPI::n_mpi_processes(comm);
+    if (n_processes > 1)
+      pcout << "       " << n_processes << " MPI processes, "
+            << MultithreadInfo::n_threads() << " thread(s) each" << std::endl;
     if (scene.has_contact())
-      pcout << "       contact: " << fine.contact_vertices.size()
-            << " vertices, " << fine.contact_faces.size() << " faces"
-            << std::endl;
+      {
+        unsigned int n_vertices = 0, n_faces = 0;
+        for (const auto &v : fine.contact_vertices)
+          n_vertices += v.owned;
+        for (const auto &f : fine.contact_faces)
+          n_faces += f.owned;
+        pcout << "       contact: " << Utilities::MPI::sum(n_vertices, comm)
+              << " vertices, " << Utilities::MPI::sum(n_faces, comm) << " faces"
+              << std::endl;
+      }
     else
       pcout << "       no contact boundary: linear FOSLS problem" << std::endl;
   }
@@ -119,16 +133,26 @@ namespace FoslsContact
               << parameters.solver.definiteness_max_dofs << " DoFs" << std::endl;
         return;
       }
+    // on the first process, on the gathered problem of that level
     DefinitenessCheck result;
+    auto              check = [&](const ConstrainedQP &level_qp) {
+      const GatheredQP gathered(level_qp, false);
+      if (gathered.here())
+        result = DefinitenessCheck::run(gathered.qp());
+      result.min_relative_eigenvalue =
+        Utilities::MPI::broadcast(discretization->get_communicator(),
+                                  result.min_relative_eigenvalue,
+                                  0);
+    };
     if (static_cast<unsigned int>(level) == discretization->finest_level())
-      result = DefinitenessCheck::run(qp);
+      check(qp);
     else
       {
         ConstrainedQP coarse;
         coarse.reinit(discretization->level(level));
         FoslsAssembler<dim>(*discretization, parameters.material, w)
           .assemble(level, coarse);
-        result = DefinitenessCheck::run(coarse);
+        check(coarse);
       }
     time_setup += wall.wall_time();
     pcout << "Definiteness check on level " << level + 1
@@ -172,28 +196,31 @@ namespace FoslsContact
 
 
   template <int dim>
-  Vector<double>
-  FoslsProblem<dim>::prolongate_rotated(const unsigned int    to_level,
-                                        const Vector<double> &coarse) const
+  LevelVector
+  FoslsProblem<dim>::prolongate_rotated(const unsigned int to_level,
+                                        const LevelVector &coarse) const
   {
-    Vector<double> cartesian(coarse), fine(discretization->level(to_level).n_dofs);
+    // (a rotation block is the DoFs of one vertex or face: one owner)
+    LevelVector cartesian(coarse),
+      fine = make_vector(discretization->level(to_level).partitioner);
+    update_ghosts(cartesian);
     discretization->rotate_to_cartesian(to_level - 1, cartesian);
     transfer->prolongate(to_level, fine, cartesian);
     discretization->rotate_to_normal_tangential(to_level, fine);
+    update_ghosts(fine);
     return fine;
   }
 
 
   template <int dim>
-  Vector<double>
-  FoslsProblem<dim>::solve_on_level(const unsigned int    level,
-                                    const Vector<double> *start) const
+  LevelVector
+  FoslsProblem<dim>::solve_on_level(const unsigned int level, const LevelVector *start) const
   {
     ConstrainedQP level_qp;
     level_qp.reinit(discretization->level(level));
     FoslsAssembler<dim>(*discretization, parameters.material, parameters.weights)
       .assemble(level, level_qp);
-    Vector<double> x(level_qp.size());
+    LevelVector x = level_qp.new_vector();
     if (start)
       x = *start;
     ConditionalOStream quiet(std::cout, false);
@@ -212,7 +239,7 @@ namespace FoslsContact
   {
     TimerOutput::Scope t(timer, "Initial guess");
     const unsigned int L = discretization->finest_level();
-    solution.reinit(qp.size());
+    solution.reinit(qp.partitioner);
     using IG = Parameters::Solver::InitialGuess;
     switch (parameters.solver.initial_guess)
       {
@@ -221,7 +248,7 @@ namespace FoslsContact
         case IG::coarse_solution:
           {
             // paper section 7: the exact level-1 solution, interpolated
-            Vector<double> x = solve_on_level(0, nullptr);
+            LevelVector x = solve_on_level(0, nullptr);
             for (unsigned int l = 1; l <= L; ++l)
               x = prolongate_rotated(l, x);
             solution = x;
@@ -229,7 +256,7 @@ namespace FoslsContact
           }
         case IG::nested_iteration:
           {
-            Vector<double> x = solve_on_level(0, nullptr);
+            LevelVector x = solve_on_level(0, nullptr);
             for (unsigned int l = 1; l < L; ++l)
               {
                 x = prolongate_rotated(l, x);
@@ -247,22 +274,25 @@ namespace FoslsContact
             Vector<double> values(dim);
             for (const auto &cell : discretization->get_dof_handler()
                                       .mg_cell_iterators_on_level(L))
-              for (const unsigned int v : cell->vertex_indices())
-                {
-                  scene.initial_displacement()->vector_value(cell->vertex(v), values);
-                  const auto &dofs = fine.vertex_dofs.at(cell->vertex_index(v));
-                  for (unsigned int k = 0; k < dim; ++k)
-                    solution[dofs[k]] = values[k];
-                }
+              if (Discretization<dim>::is_present(cell))
+                for (const unsigned int v : cell->vertex_indices())
+                  {
+                    scene.initial_displacement()->vector_value(cell->vertex(v), values);
+                    const auto &dofs = fine.vertex_dofs.at(cell->vertex_index(v));
+                    for (unsigned int k = 0; k < dim; ++k)
+                      solution.local_element(dofs[k]) = values[k];
+                  }
             discretization->rotate_to_normal_tangential(L, solution);
             break;
           }
       }
     // fixed values are simply set; a penetrating start is worth a note
     double penetration = 0;
-    for (types::global_dof_index i = 0; i < solution.size(); ++i)
+    for (unsigned int i = 0; i < qp.n_owned(); ++i)
       if (qp.role[i] == DoFRole::bounded)
-        penetration = std::max(penetration, solution[i] - qp.upper_bounds[i]);
+        penetration = std::max(penetration,
+                               solution.local_element(i) - qp.upper_bounds.local_element(i));
+    penetration = Utilities::MPI::max(penetration, qp.get_communicator());
     if (penetration > 1e-12)
       pcout << "Initial guess violates the contact constraints by "
             << std::scientific << std::setprecision(3) << penetration
@@ -296,8 +326,11 @@ namespace FoslsContact
                                         parameters.solver,
                                         pcout,
                                         solver_name(parameters.solver.type));
+    const CommunicationCounter before = communication();
     solver->solve(qp, solution, *monitor);
-    time_solve = wall.wall_time();
+    time_solve          = wall.wall_time();
+    solve_communication = {communication().exchanges - before.exchanges,
+                           communication().values - before.values};
 
     const KKTResidual kkt = qp.kkt_residual(solution);
     pcout << "KKT residuals: stationarity " << std::scientific
@@ -319,13 +352,16 @@ namespace FoslsContact
   {
     TimerOutput::Scope      t(timer, "Output");
     Postprocessor<dim>      post(*discretization, parameters);
-    const Vector<double>    cartesian = post.cartesian_active(solution);
+    const LevelVector       cartesian = post.cartesian_active(solution);
     const Tensor<1, dim>    force     = post.contact_force(cartesian);
     const FunctionalValue   J         = qp.parts(solution);
     const KKTResidual       kkt       = qp.kkt_residual(solution);
 
     Utilities::System::MemoryStats memory;
     Utilities::System::get_memory_stats(memory);
+    const MPI_Comm comm = discretization->get_communicator();
+    // peak resident memory: all processes together, and the largest one
+    const double peak_mb = memory.VmHWM / 1024.;
 
     std::map<std::string, std::string> summary;
     summary["dimension"]        = std::to_string(dim);
@@ -361,7 +397,24 @@ namespace FoslsContact
       }
     summary["time_setup_s"]          = number(time_setup);
     summary["time_solve_s"]          = number(time_solve);
-    summary["peak_rss_mb"]           = number(memory.VmHWM / 1024.);
+    summary["peak_rss_mb"]           = number(Utilities::MPI::sum(peak_mb, comm));
+    summary["peak_rss_mb_per_process"] = number(Utilities::MPI::max(peak_mb, comm));
+    summary["mpi_processes"]         = std::to_string(Utilities::MPI::n_mpi_processes(comm));
+    // communication of the solve: point-to-point exchanges of the busiest
+    // process, values sent by all; and the ghost DoFs per level (all
+    // processes), the surface the exchanges move
+    summary["solve_exchanges"] = std::to_string(
+      Utilities::MPI::max(solve_communication.exchanges, comm));
+    summary["solve_values_sent"] = std::to_string(
+      Utilities::MPI::sum(solve_communication.values, comm));
+    {
+      std::string ghosts = "[";
+      for (unsigned int l = 0; l < discretization->n_levels(); ++l)
+        ghosts += (l ? ", " : "") +
+                  std::to_string(Utilities::MPI::sum(
+                    discretization->level(l).partitioner->n_ghost_indices(), comm));
+      summary["ghost_dofs_per_level"] = ghosts + "]";
+    }
     {
       // wall seconds of every TimerOutput section finished so far (the
       // output section itself is still running)

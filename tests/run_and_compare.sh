@@ -8,13 +8,15 @@
 #       mode with EXE = python3 tests/solver/<name>.py FOSLS_CONTACT SRC.
 #
 #   run_and_compare.sh scene WORKDIR EXPECTED REL ABS FILTER -- EXE PRM [ARGS...]
-#       Runs `EXE PRM --set Output/Directory=out ARGS...` in a fresh WORKDIR;
-#       it must exit with 0 and print nothing on stderr. FILTER (python3)
-#       turns the screen output and the output directory into deterministic
-#       text that must match EXPECTED (numdiff as above).
+#       Runs `EXE PRM --set Output/Directory=out ARGS...` in a fresh WORKDIR
+#       (prefixed by $FOSLS_LAUNCH if set, e.g. "mpirun -np 2"); it must
+#       exit with 0 and print nothing on stderr. FILTER (python3) turns the
+#       screen output and the output directory into deterministic text that
+#       must match EXPECTED (numdiff as above).
 #
 #   run_and_compare.sh bad   WORKDIR REGEX -- EXE [ARGS...]
-#       Runs `EXE ARGS...` in a fresh, empty WORKDIR/run; it must exit
+#       Runs `EXE ARGS...` (prefixed by $FOSLS_LAUNCH if set) in a fresh,
+#       empty WORKDIR/run; it must exit
 #       non-zero (but not by a signal), print exactly one line on stderr that
 #       matches the extended regular expression REGEX, and write nothing
 #       (no output directory): WORKDIR/run must still be empty afterwards.
@@ -69,7 +71,8 @@ case "$mode" in
     exe=$1 prm=$2
     shift 2
     rm -rf "$workdir" && mkdir -p "$workdir" && cd "$workdir" || fail "cannot create $workdir"
-    "$exe" "$prm" --set "Output/Directory=out" "$@" > screen 2> stderr
+    # shellcheck disable=SC2086
+    ${FOSLS_LAUNCH:-} "$exe" "$prm" --set "Output/Directory=out" "$@" > screen 2> stderr
     rc=$?
     tail -n 25 screen
     [ $rc -eq 0 ] || { cat stderr; fail "exit code $rc"; }
@@ -86,7 +89,8 @@ case "$mode" in
     [ "$1" = "--" ] || fail "usage"
     shift
     rm -rf "$workdir" && mkdir -p "$workdir/run" && cd "$workdir/run" || fail "cannot create $workdir"
-    "$@" > ../stdout 2> ../stderr
+    # shellcheck disable=SC2086
+    ${FOSLS_LAUNCH:-} "$@" > ../stdout 2> ../stderr
     rc=$?
     echo "exit code: $rc"
     echo "stderr:"

@@ -22,7 +22,9 @@ namespace FoslsContact
    *   scene -> mesh and DoFs -> assembled functional -> constraints in
    *   normal-tangential coordinates -> solver -> output,
    *
-   * one member function per box, each in its own TimerOutput section.
+   * one member function per box, each in its own TimerOutput section. It
+   * runs on all processes of MPI_COMM_WORLD (started by mpirun) or on one;
+   * the screen output comes from the first.
    */
   template <int dim>
   class FoslsProblem
@@ -48,11 +50,9 @@ namespace FoslsContact
     std::unique_ptr<QPSolver> make_solver(const ConstrainedQP &level_qp,
                                           const unsigned int   level) const;
     /** Solve the problem assembled on level @p level (for initial guesses). */
-    Vector<double> solve_on_level(const unsigned int level,
-                                  const Vector<double> *start) const;
+    LevelVector solve_on_level(const unsigned int level, const LevelVector *start) const;
     /** Interpolate a rotated level-l vector to level l+1 (rotated). */
-    Vector<double> prolongate_rotated(const unsigned int    to_level,
-                                      const Vector<double> &coarse) const;
+    LevelVector prolongate_rotated(const unsigned int to_level, const LevelVector &coarse) const;
 
     const Parameters::AllParameters parameters;
     const std::string               used_parameters;
@@ -63,10 +63,12 @@ namespace FoslsContact
     std::unique_ptr<Discretization<dim>> discretization;
     std::unique_ptr<LevelTransfer<dim>>  transfer;
     ConstrainedQP                        qp;
-    Vector<double>                       solution;
+    LevelVector                          solution;
     std::unique_ptr<QPSolver>            solver;
     std::unique_ptr<Monitor>             monitor;
     double                               time_setup = 0, time_solve = 0;
+    /** What this process sent point to point during the solve. */
+    CommunicationCounter                 solve_communication;
   };
 } // namespace FoslsContact
 

@@ -102,8 +102,11 @@ namespace FoslsContact
 
       FullMatrix<double>                   k_eq, k_const, k_compl, k_total;
       Vector<double>                       r_eq, r_compl, r_total;
+      /** local indices */
       std::vector<types::global_dof_index> dofs;
       double                               constant_eq     = 0;
+      /** the cell is owned (its constant counts here) */
+      bool                                 owned           = false;
       bool                                 touches_contact = false;
       bool                                 valid           = false;
     };
@@ -150,6 +153,7 @@ namespace FoslsContact
       r_eq    = 0;
       r_compl = 0;
       copy.constant_eq = 0;
+      copy.owned       = cell->is_locally_owned_on_level();
       fe_values.reinit(cell);
 
       auto &residual   = scratch.residual;
@@ -234,6 +238,8 @@ namespace FoslsContact
 
       auto &dofs = copy.dofs;
       cell->get_mg_dof_indices(dofs);
+      for (auto &dof : dofs)
+        dof = data.partitioner->global_to_local(dof);
 
       // Change of basis R^T K R for DoFs in rotation blocks (section 4.3).
       bool rotated = false;
@@ -297,6 +303,8 @@ namespace FoslsContact
     std::exception_ptr error;
     auto worker = [&](const Iterator &cell, AssemblyScratch<dim> &scratch, AssemblyCopy &copy) {
       copy.valid = false;
+      if (!Discretization<dim>::is_present(cell))
+        return; // no DoFs on this process
       try
         {
           assemble_cell(cell, scratch, copy);
@@ -309,24 +317,29 @@ namespace FoslsContact
             error = std::current_exception();
         }
     };
+    // Only the owned rows are summed here; every cell at an owned DoF is
+    // here (owned or ghost), so they are complete. The ghost rows the
+    // patches need come from their owners (compress_matrices()).
+    const unsigned int n_owned = data.n_owned();
     auto copier = [&](const AssemblyCopy &copy) {
       if (!copy.valid)
         return;
       const auto &dofs = copy.dofs;
-      qp.matrix_eq.add(dofs, dofs, copy.k_eq);
-      if (copy.touches_contact)
-        {
-          qp.matrix_compl.add(dofs, dofs, copy.k_compl);
-          for (unsigned int i = 0; i < n; ++i)
-            qp.rhs_compl(dofs[i]) += 2. * copy.r_compl(i);
-        }
-      qp.matrix.add(dofs, dofs, copy.k_total);
       for (unsigned int i = 0; i < n; ++i)
-        {
-          qp.rhs(dofs[i]) += copy.r_total(i);
-          qp.rhs_eq(dofs[i]) += 2. * copy.r_eq(i);
-        }
-      qp.constant_eq += copy.constant_eq;
+        if (dofs[i] < n_owned)
+          {
+            qp.matrix_eq.add(dofs[i], n, dofs.data(), &copy.k_eq(i, 0), false);
+            qp.matrix.add(dofs[i], n, dofs.data(), &copy.k_total(i, 0), false);
+            qp.rhs.local_element(dofs[i]) += copy.r_total(i);
+            qp.rhs_eq.local_element(dofs[i]) += 2. * copy.r_eq(i);
+            if (copy.touches_contact)
+              {
+                qp.matrix_compl.add(dofs[i], n, dofs.data(), &copy.k_compl(i, 0), false);
+                qp.rhs_compl.local_element(dofs[i]) += 2. * copy.r_compl(i);
+              }
+          }
+      if (copy.owned)
+        qp.constant_eq += copy.constant_eq;
     };
 
     const auto &dof_handler = discretization.get_dof_handler();
@@ -344,7 +357,8 @@ namespace FoslsContact
     qp.matrix_eq *= 2.;
     qp.matrix_compl *= 2.;
     qp.compress_matrices();
-    qp.constant = qp.constant_eq;
+    qp.constant_eq = Utilities::MPI::sum(qp.constant_eq, qp.get_communicator());
+    qp.constant    = qp.constant_eq;
   }
 
   template class FoslsAssembler<2>;

@@ -5,7 +5,6 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/multigrid/mg_tools.h>
 
 #include <fosls_contact/discretization/discretization.h>
 
@@ -15,19 +14,32 @@ namespace FoslsContact
 {
   template <int dim>
   Discretization<dim>::Discretization(const Scene<dim> &scene,
-                                      const unsigned int n_levels)
+                                      const unsigned int n_levels,
+                                      const MPI_Comm     comm)
     : scene(scene)
-    , triangulation(Triangulation<dim>::limit_level_difference_at_vertices)
+    , triangulation(comm,
+                    Triangulation<dim>::limit_level_difference_at_vertices,
+                    parallel::distributed::Triangulation<dim>::construct_multigrid_hierarchy)
     , fe(FE_Q<dim>(1), dim, FE_RaviartThomas<dim>(0), dim)
     , mapping(1)
   {
-    scene.make_coarse_mesh(triangulation);
-    coarse_ratio = Scene<dim>::mesh_size_ratio(triangulation);
+    {
+      // the coarse mesh is built serially (on every process, identically)
+      // and handed to p4est
+      Triangulation<dim> coarse;
+      scene.make_coarse_mesh(coarse);
+      coarse_ratio = Scene<dim>::mesh_size_ratio(coarse);
+      triangulation.copy_triangulation(coarse);
+    }
     triangulation.refine_global(n_levels - 1);
 
     dof_handler.reinit(triangulation);
     dof_handler.distribute_dofs(fe);
     dof_handler.distribute_mg_dofs();
+    active_partitioner = std::make_shared<const Utilities::MPI::Partitioner>(
+      dof_handler.locally_owned_dofs(),
+      DoFTools::extract_locally_relevant_dofs(dof_handler),
+      comm);
 
     levels.resize(triangulation.n_global_levels());
     for (unsigned int l = 0; l < levels.size(); ++l)
@@ -63,35 +75,44 @@ namespace FoslsContact
   {
     LevelData<dim> &data = levels[l];
     data.n_dofs          = dof_handler.n_dofs(l);
-    data.role.assign(data.n_dofs, DoFRole::free);
-    data.fixed_values.reinit(data.n_dofs);
-    data.upper_bounds.reinit(data.n_dofs);
+    data.partitioner     = std::make_shared<const Utilities::MPI::Partitioner>(
+      dof_handler.locally_owned_mg_dofs(l),
+      DoFTools::extract_locally_relevant_level_dofs(dof_handler, l),
+      get_communicator());
+    const auto &       partitioner = *data.partitioner;
+    const unsigned int n_local     = data.n_local();
+    const unsigned int n_owned     = data.n_owned();
+    data.role.assign(n_local, DoFRole::free);
+    data.fixed_values.reinit(data.partitioner);
+    data.upper_bounds.reinit(data.partitioner);
     data.upper_bounds.add(std::numeric_limits<double>::infinity());
-    data.rotation_of_dof.assign(data.n_dofs, numbers::invalid_unsigned_int);
-
-    {
-      DynamicSparsityPattern dsp(data.n_dofs, data.n_dofs);
-      MGTools::make_sparsity_pattern(dof_handler, dsp, l);
-      data.sparsity.copy_from(dsp);
-    }
+    data.rotation_of_dof.assign(n_local, numbers::invalid_unsigned_int);
 
     // Which DoF is which: the base element (0 = Q1^d, 1 = RT0^d), its copy
-    // (displacement component or stress row) and the vertex or face.
+    // (displacement component or stress row) and the vertex or face, for
+    // the cells with DoFs here (owned and ghost).
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    auto local_dofs = [&](const auto &cell) {
+      cell->get_mg_dof_indices(dofs);
+      for (auto &dof : dofs)
+        dof = partitioner.global_to_local(dof);
+      return dofs;
+    };
     for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
-      {
-        cell->get_mg_dof_indices(dofs);
-        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-          {
-            const auto base = fe.system_to_base_index(i);
-            if (base.first.first == 0)
-              data.vertex_dofs[cell->vertex_index(base.second)]
+      if (is_present(cell))
+        {
+          local_dofs(cell);
+          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+            {
+              const auto base = fe.system_to_base_index(i);
+              if (base.first.first == 0)
+                data.vertex_dofs[cell->vertex_index(base.second)]
+                                [base.first.second] = dofs[i];
+              else
+                data.face_dofs[cell->face(base.second)->index()]
                               [base.first.second] = dofs[i];
-            else
-              data.face_dofs[cell->face(base.second)->index()]
-                            [base.first.second] = dofs[i];
-          }
-      }
+            }
+        }
 
     const QGauss<dim - 1>   face_quadrature(3);
     FEFaceValues<dim>       fe_face(mapping,
@@ -104,156 +125,237 @@ namespace FoslsContact
     std::set<unsigned int>                     dirichlet_vertices;
     std::map<unsigned int, Point<dim>>         contact_vertex_points;
     Vector<double>                             values(dim);
+    struct FaceRotation
+    {
+      unsigned int                            face_index;
+      std::array<types::global_dof_index, dim> dofs;
+      Point<dim>                              center;
+      Tensor<1, dim>                          normal;
+      double                                  area, c;
+    };
+    std::vector<FaceRotation> contact_face_data;
 
     for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
-      for (const unsigned int f : cell->face_indices())
-        {
-          if (!cell->at_boundary(f))
-            continue;
-          const auto                    face = cell->face(f);
-          const types::boundary_id      id   = face->boundary_id();
-          const auto &face_rt = data.face_dofs.at(face->index());
-
-          // RT DoF of stress row m on this face: its normal component times
-          // the outward normal, at the face quadrature points.
-          fe_face.reinit(cell, f);
-          std::array<unsigned int, dim> local_rt;
+      if (is_present(cell))
+        for (const unsigned int f : cell->face_indices())
           {
-            std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
-            cell->get_mg_dof_indices(cell_dofs);
-            for (unsigned int m = 0; m < dim; ++m)
-              local_rt[m] = std::find(cell_dofs.begin(), cell_dofs.end(),
-                                      face_rt[m]) - cell_dofs.begin();
-          }
-          auto normal_component = [&](const unsigned int m,
-                                      const unsigned int q) {
-            const FEValuesExtractors::Vector row(dim + m * dim);
-            return fe_face[row].value(local_rt[m], q) *
-                   fe_face.normal_vector(q);
-          };
+            if (!cell->at_boundary(f))
+              continue;
+            const auto               face    = cell->face(f);
+            const types::boundary_id id      = face->boundary_id();
+            const auto &             face_rt = data.face_dofs.at(face->index());
 
-          // Prescribed traction, component m, as the L2 projection onto the
-          // face's normal-flux basis function: it is essential here.
-          auto fix_traction = [&](const unsigned int m) {
-            double num = 0, den = 0;
-            for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-              {
-                const double phi_n = normal_component(m, q);
-                num += scene.traction().value(fe_face.quadrature_point(q), m) *
-                       phi_n * fe_face.JxW(q);
-                den += phi_n * phi_n * fe_face.JxW(q);
-              }
-            data.role[face_rt[m]]         = DoFRole::fixed;
-            data.fixed_values[face_rt[m]] = num / den;
-          };
-
-          if (scene.is_dirichlet(id))
+            // RT DoF of stress row m on this face: its normal component
+            // times the outward normal, at the face quadrature points.
+            fe_face.reinit(cell, f);
+            std::array<unsigned int, dim> local_rt;
             {
-              for (const unsigned int v : face->vertex_indices())
-                {
-                  const unsigned int vi = face->vertex_index(v);
-                  dirichlet_vertices.insert(vi);
-                  scene.dirichlet_values().vector_value(face->vertex(v), values);
-                  for (unsigned int k = 0; k < dim; ++k)
-                    if (mask[k])
-                      {
-                        const auto dof        = data.vertex_dofs.at(vi)[k];
-                        data.role[dof]         = DoFRole::fixed;
-                        data.fixed_values[dof] = values[k];
-                      }
-                }
+              local_dofs(cell);
               for (unsigned int m = 0; m < dim; ++m)
-                if (!mask[m])
-                  fix_traction(m);
+                local_rt[m] =
+                  std::find(dofs.begin(), dofs.end(), face_rt[m]) - dofs.begin();
             }
-          else if (scene.is_neumann(id))
-            {
-              for (unsigned int m = 0; m < dim; ++m)
-                fix_traction(m);
-            }
-          else if (scene.is_contact(id))
-            {
-              for (const unsigned int v : face->vertex_indices())
-                contact_vertex_points[face->vertex_index(v)] = face->vertex(v);
+            auto normal_component = [&](const unsigned int m, const unsigned int q) {
+              const FEValuesExtractors::Vector row(dim + m * dim);
+              return fe_face[row].value(local_rt[m], q) * fe_face.normal_vector(q);
+            };
 
-              // Q_phi = H_phi / c with c the mean normal component of the
-              // face's basis function (+-1/|face|): then the first rotated
-              // coordinate is the mean normal traction (sigma n).n on the
-              // face, whatever the sign of the RT orientation.
-              double area = 0, c = 0;
+            // Prescribed traction, component m, as the L2 projection onto
+            // the face's normal-flux basis function: it is essential here.
+            auto fix_traction = [&](const unsigned int m) {
+              double num = 0, den = 0;
               for (unsigned int q = 0; q < face_quadrature.size(); ++q)
                 {
-                  area += fe_face.JxW(q);
-                  c += normal_component(0, q) * fe_face.JxW(q);
+                  const double phi_n = normal_component(m, q);
+                  num += scene.traction().value(fe_face.quadrature_point(q), m) *
+                         phi_n * fe_face.JxW(q);
+                  den += phi_n * phi_n * fe_face.JxW(q);
                 }
-              c /= area;
-              const Tensor<1, dim> n = scene.obstacle_normal(face->center());
-              RotationBlock<dim>   block;
-              block.dofs   = face_rt;
-              block.matrix = householder(n);
-              block.inverse = block.matrix;
-              block.matrix *= 1. / c;
-              block.inverse *= c;
-              const unsigned int b = data.rotations.size();
-              data.rotations.push_back(block);
-              for (unsigned int m = 0; m < dim; ++m)
-                {
-                  data.rotation_of_dof[face_rt[m]] = b;
-                  data.role[face_rt[m]]            = DoFRole::fixed; // tangential
-                  data.fixed_values[face_rt[m]]    = 0;
-                }
-              data.role[face_rt[0]]         = DoFRole::bounded;
-              data.upper_bounds[face_rt[0]] = 0.;
-              data.contact_faces.push_back(
-                {face->index(), face_rt[0], face->center(), n, area});
-            }
-        }
+              data.role[face_rt[m]]                     = DoFRole::fixed;
+              data.fixed_values.local_element(face_rt[m]) = num / den;
+            };
+
+            if (scene.is_dirichlet(id))
+              {
+                for (const unsigned int v : face->vertex_indices())
+                  {
+                    const unsigned int vi = face->vertex_index(v);
+                    dirichlet_vertices.insert(vi);
+                    scene.dirichlet_values().vector_value(face->vertex(v), values);
+                    for (unsigned int k = 0; k < dim; ++k)
+                      if (mask[k])
+                        {
+                          const auto dof                       = data.vertex_dofs.at(vi)[k];
+                          data.role[dof]                       = DoFRole::fixed;
+                          data.fixed_values.local_element(dof) = values[k];
+                        }
+                  }
+                for (unsigned int m = 0; m < dim; ++m)
+                  if (!mask[m])
+                    fix_traction(m);
+              }
+            else if (scene.is_neumann(id))
+              {
+                for (unsigned int m = 0; m < dim; ++m)
+                  fix_traction(m);
+              }
+            else if (scene.is_contact(id))
+              {
+                for (const unsigned int v : face->vertex_indices())
+                  contact_vertex_points[face->vertex_index(v)] = face->vertex(v);
+
+                // Q_phi = H_phi / c with c the mean normal component of the
+                // face's basis function (+-1/|face|): then the first rotated
+                // coordinate is the mean normal traction (sigma n).n on the
+                // face, whatever the sign of the RT orientation.
+                double area = 0, c = 0;
+                for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                  {
+                    area += fe_face.JxW(q);
+                    c += normal_component(0, q) * fe_face.JxW(q);
+                  }
+                c /= area;
+                for (unsigned int m = 0; m < dim; ++m)
+                  {
+                    data.role[face_rt[m]]                       = DoFRole::fixed; // tangential
+                    data.fixed_values.local_element(face_rt[m]) = 0;
+                  }
+                data.role[face_rt[0]]                       = DoFRole::bounded;
+                data.upper_bounds.local_element(face_rt[0]) = 0.;
+                contact_face_data.push_back({static_cast<unsigned int>(face->index()),
+                                             face_rt,
+                                             face->center(),
+                                             scene.obstacle_normal(face->center()),
+                                             area,
+                                             c});
+              }
+          }
 
     // Contact vertices: those of contact faces that are not Dirichlet
     // vertices (where the prescribed displacement wins).
     for (const auto &[vi, p] : contact_vertex_points)
+      if (!dirichlet_vertices.count(vi))
+        {
+          const auto dof                       = data.vertex_dofs.at(vi)[0];
+          data.role[dof]                       = DoFRole::bounded;
+          data.upper_bounds.local_element(dof) = scene.gap().value(p);
+        }
+
+    // The owner decides: a ghost vertex on the edge of the ghost layer may
+    // miss a Dirichlet face of a cell that is not here.
+    exchange_ghosts(data.partitioner, data.role);
+    update_ghosts(data.fixed_values);
+    update_ghosts(data.upper_bounds);
+
+    // The rotations (paper section 4.3) of the contact faces and vertices.
+    for (const auto &face : contact_face_data)
       {
-        if (dirichlet_vertices.count(vi))
+        RotationBlock<dim> block;
+        block.dofs    = face.dofs;
+        block.matrix  = householder(face.normal);
+        block.inverse = block.matrix;
+        block.matrix *= 1. / face.c;
+        block.inverse *= face.c;
+        const unsigned int b = data.rotations.size();
+        data.rotations.push_back(block);
+        for (unsigned int m = 0; m < dim; ++m)
+          data.rotation_of_dof[face.dofs[m]] = b;
+        data.contact_faces.push_back({face.face_index,
+                                      face.dofs[0],
+                                      face.center,
+                                      face.normal,
+                                      face.area,
+                                      face.dofs[0] < n_owned});
+      }
+    for (const auto &[vi, p] : contact_vertex_points)
+      {
+        const auto &vertex = data.vertex_dofs.at(vi);
+        if (data.role[vertex[0]] != DoFRole::bounded)
           continue;
         const Tensor<1, dim> n = scene.obstacle_normal(p);
         RotationBlock<dim>   block;
-        block.dofs    = data.vertex_dofs.at(vi);
+        block.dofs    = vertex;
         block.matrix  = householder(n);
         block.inverse = block.matrix;
         const unsigned int b = data.rotations.size();
         data.rotations.push_back(block);
         for (unsigned int k = 0; k < dim; ++k)
           data.rotation_of_dof[block.dofs[k]] = b;
-        data.role[block.dofs[0]]         = DoFRole::bounded;
-        const double g                   = scene.gap().value(p);
-        data.upper_bounds[block.dofs[0]] = g;
-        data.contact_vertices.push_back({vi, block.dofs[0], p, n, g});
+        data.contact_vertices.push_back({vi,
+                                         vertex[0],
+                                         p,
+                                         n,
+                                         data.upper_bounds.local_element(vertex[0]),
+                                         vertex[0] < n_owned});
       }
+
+    // The rows held here: the owned DoFs, and the DoFs of the patches at
+    // the vertices of owned cells (the vertex's displacement, the faces at
+    // it), whose cells are all here.
+    std::vector<bool> held(n_local, false);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      held[i] = true;
+    std::set<unsigned int> owned_cell_vertices;
+    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
+      if (cell->is_locally_owned_on_level())
+        for (const unsigned int v : cell->vertex_indices())
+          owned_cell_vertices.insert(cell->vertex_index(v));
+    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
+      if (is_present(cell))
+        for (const unsigned int v : cell->vertex_indices())
+          if (owned_cell_vertices.count(cell->vertex_index(v)))
+            {
+              for (const auto dof : data.vertex_dofs.at(cell->vertex_index(v)))
+                held[dof] = true;
+              for (const unsigned int f : cell->face_indices())
+                for (unsigned int i = 0; i < GeometryInfo<dim>::vertices_per_face; ++i)
+                  if (GeometryInfo<dim>::face_to_cell_vertices(f, i) == v)
+                    for (const auto dof : data.face_dofs.at(cell->face(f)->index()))
+                      held[dof] = true;
+            }
+    {
+      DynamicSparsityPattern dsp(n_local, n_local);
+      for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
+        if (is_present(cell))
+          {
+            local_dofs(cell);
+            for (const auto i : dofs)
+              if (held[i])
+                for (const auto j : dofs)
+                  dsp.add(i, j);
+          }
+      data.sparsity.copy_from(dsp);
+    }
+    std::vector<MatrixEntryImport::Entry> requests;
+    for (unsigned int i = n_owned; i < n_local; ++i)
+      if (held[i])
+        for (auto e = data.sparsity.begin(i); e != data.sparsity.end(i); ++e)
+          requests.emplace_back(data.global(i), data.global(e->column()));
+    data.ghost_rows.reinit(requests, data.sparsity, data.partitioner);
   }
 
 
   template <int dim>
   void
   Discretization<dim>::apply_rotations(const unsigned int l,
-                                       Vector<double> &   x,
+                                       LevelVector &      x,
                                        const bool         inverse) const
   {
     Vector<double> in(dim), out(dim);
     for (const auto &block : levels[l].rotations)
       {
         for (unsigned int k = 0; k < dim; ++k)
-          in[k] = x[block.dofs[k]];
+          in[k] = x.local_element(block.dofs[k]);
         (inverse ? block.inverse : block.matrix).vmult(out, in);
         for (unsigned int k = 0; k < dim; ++k)
-          x[block.dofs[k]] = out[k];
+          x.local_element(block.dofs[k]) = out[k];
       }
   }
 
 
   template <int dim>
   void
-  Discretization<dim>::rotate_to_cartesian(const unsigned int l,
-                                           Vector<double> &   x) const
+  Discretization<dim>::rotate_to_cartesian(const unsigned int l, LevelVector &x) const
   {
     apply_rotations(l, x, false);
   }
@@ -262,29 +364,37 @@ namespace FoslsContact
   template <int dim>
   void
   Discretization<dim>::rotate_to_normal_tangential(const unsigned int l,
-                                                   Vector<double> &   x) const
+                                                   LevelVector &      x) const
   {
     apply_rotations(l, x, true);
   }
 
 
   template <int dim>
-  Vector<double>
-  Discretization<dim>::to_active(const Vector<double> &level_vector) const
+  LevelVector
+  Discretization<dim>::to_active(const LevelVector &level_vector) const
   {
+    // every owned active DoF is a DoF of an owned active cell, whose level
+    // DoFs (owned or ghost) are here
     const unsigned int                   L = finest_level();
-    Vector<double>                       active(dof_handler.n_dofs());
+    const auto &                         level_partitioner = *levels[L].partitioner;
+    LevelVector                          active(active_partitioner);
     std::vector<types::global_dof_index> level_dofs(fe.n_dofs_per_cell()),
       active_dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(L))
-      {
-        const typename DoFHandler<dim>::active_cell_iterator active_cell(
-          &triangulation, cell->level(), cell->index(), &dof_handler);
-        cell->get_mg_dof_indices(level_dofs);
-        active_cell->get_dof_indices(active_dofs);
-        for (unsigned int i = 0; i < level_dofs.size(); ++i)
-          active[active_dofs[i]] = level_vector[level_dofs[i]];
-      }
+    update_ghosts(level_vector);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const typename DoFHandler<dim>::level_cell_iterator level_cell(
+            &triangulation, cell->level(), cell->index(), &dof_handler);
+          level_cell->get_mg_dof_indices(level_dofs);
+          cell->get_dof_indices(active_dofs);
+          for (unsigned int i = 0; i < level_dofs.size(); ++i)
+            if (active_partitioner->in_local_range(active_dofs[i]))
+              active[active_dofs[i]] = level_vector.local_element(
+                level_partitioner.global_to_local(level_dofs[i]));
+        }
+    update_ghosts(active);
     return active;
   }
 

@@ -70,18 +70,27 @@ namespace FoslsContact
     std::vector<types::global_dof_index> parent_dofs(n), child_dofs(n);
     for (unsigned int l = 1; l < n_levels; ++l)
       {
+        const auto &           coarse = *discretization.level(l - 1).partitioner;
+        const auto &           fine   = *discretization.level(l).partitioner;
         std::vector<Entry>     entries;
-        DynamicSparsityPattern dsp(dof_handler.n_dofs(l), dof_handler.n_dofs(l - 1));
+        DynamicSparsityPattern dsp(discretization.level(l).n_local(),
+                                   discretization.level(l - 1).n_local());
         for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l - 1))
-          if (cell->has_children())
+          if (cell->has_children() && Discretization<dim>::is_present(cell))
             {
               cell->get_mg_dof_indices(parent_dofs);
+              for (auto &dof : parent_dofs)
+                dof = coarse.global_to_local(dof);
               const auto parent_signs = rt_signs(fe_face, cell);
               for (unsigned int c = 0; c < cell->n_children(); ++c)
                 {
+                  if (!Discretization<dim>::is_present(cell->child(c)))
+                    continue;
                   const FullMatrix<double> &P =
                     fe.get_prolongation_matrix(c, cell->refinement_case());
                   cell->child(c)->get_mg_dof_indices(child_dofs);
+                  for (auto &dof : child_dofs)
+                    dof = fine.global_to_local(dof);
                   const auto child_signs = rt_signs(fe_face, cell->child(c));
                   for (unsigned int i = 0; i < n; ++i)
                     for (unsigned int j = 0; j < n; ++j)
@@ -105,11 +114,11 @@ namespace FoslsContact
 
   template <int dim>
   void
-  LevelTransfer<dim>::prolongate(const unsigned int    to_level,
-                                 Vector<double> &      dst,
-                                 const Vector<double> &src) const
+  LevelTransfer<dim>::prolongate(const unsigned int to_level,
+                                 LevelVector &      dst,
+                                 const LevelVector &src) const
   {
-    matrices[to_level]->vmult(dst, src);
+    vmult(*matrices[to_level], dst, src);
   }
 
   template class LevelTransfer<2>;

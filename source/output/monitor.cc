@@ -20,7 +20,7 @@ namespace FoslsContact
 
 
   void
-  Monitor::start(const Vector<double> &x)
+  Monitor::start(const LevelVector &x)
   {
     AssertThrow(std::isfinite(x.l2_norm()),
                 ExcMessage("the starting iterate is not finite"));
@@ -30,7 +30,7 @@ namespace FoslsContact
     r.functional = qp.parts(x);
     active_set            = qp.active_set(x);
     active_set_changed_at = 0;
-    r.active    = std::count(active_set.begin(), active_set.end(), true);
+    r.active    = qp.n_active(x);
     r.violation = qp.max_violation(x);
     history.push_back(r);
     pcout << "  " << solver_name << ": start  J = " << std::scientific
@@ -40,16 +40,18 @@ namespace FoslsContact
 
 
   bool
-  Monitor::report(const Vector<double> &x, const Vector<double> &x_old)
+  Monitor::report(const LevelVector &x, const LevelVector &x_old)
   {
-    Vector<double> d(x);
+    LevelVector d(x);
     d -= x_old;
     IterationRecord r;
     r.iteration    = history.size();
     r.functional   = qp.parts(x);
     r.correction   = qp.energy_norm(d);
     std::vector<bool> active = qp.active_set(x);
-    r.active       = std::count(active.begin(), active.end(), true);
+    r.active       = Utilities::MPI::sum(
+      static_cast<unsigned int>(std::count(active.begin(), active.end(), true)),
+      qp.get_communicator());
     r.violation    = qp.max_violation(x);
     r.wall_seconds = timer.wall_time();
     const double previous = history.back().correction;
@@ -60,7 +62,8 @@ namespace FoslsContact
                 ExcMessage(solver_name + ": the iterate became NaN/Inf at "
                            "iteration " + std::to_string(r.iteration)));
     history.push_back(r);
-    if (active != active_set)
+    // (the active set changed if it changed on any process)
+    if (Utilities::MPI::max(active != active_set ? 1u : 0u, qp.get_communicator()) == 1)
       {
         active_set_changed_at = r.iteration;
         active_set.swap(active);

@@ -70,10 +70,11 @@ namespace FoslsContact
 
 
   template <int dim>
-  Vector<double>
-  Postprocessor<dim>::cartesian_active(const Vector<double> &x_rotated) const
+  LevelVector
+  Postprocessor<dim>::cartesian_active(const LevelVector &x_rotated) const
   {
-    Vector<double> x = x_rotated;
+    LevelVector x = x_rotated;
+    update_ghosts(x);
     discretization.rotate_to_cartesian(discretization.finest_level(), x);
     return discretization.to_active(x);
   }
@@ -81,7 +82,7 @@ namespace FoslsContact
 
   template <int dim>
   Tensor<1, dim>
-  Postprocessor<dim>::contact_force(const Vector<double> &solution) const
+  Postprocessor<dim>::contact_force(const LevelVector &solution) const
   {
     const auto &          scene = discretization.get_scene();
     Tensor<1, dim>        force;
@@ -97,6 +98,7 @@ namespace FoslsContact
                                        Vector<double>(dim + dim * dim));
     for (const auto &cell :
          discretization.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
       for (const unsigned int f : cell->face_indices())
         if (cell->at_boundary(f) && scene.is_contact(cell->face(f)->boundary_id()))
           {
@@ -108,13 +110,13 @@ namespace FoslsContact
                   force[m] += values[q][dim + m * dim + k] *
                               fe_face.normal_vector(q)[k] * fe_face.JxW(q);
           }
-    return force;
+    return Utilities::MPI::sum(force, discretization.get_communicator());
   }
 
 
   template <int dim>
   ErrorNorms
-  Postprocessor<dim>::errors(const Vector<double> &solution) const
+  Postprocessor<dim>::errors(const LevelVector &solution) const
   {
     const auto &scene = discretization.get_scene();
     ErrorNorms  e;
@@ -137,6 +139,8 @@ namespace FoslsContact
     for (const auto &cell :
          discretization.get_dof_handler().active_cell_iterators())
       {
+        if (!cell->is_locally_owned())
+          continue;
         fe_values.reinit(cell);
         fe_values[displacement].get_function_values(solution, u);
         fe_values[displacement].get_function_gradients(solution, grad_u);
@@ -175,50 +179,76 @@ namespace FoslsContact
               }
           }
       }
-    e.u_l2      = std::sqrt(e.u_l2);
-    e.u_h1_semi = std::sqrt(e.u_h1_semi);
-    e.sigma_l2  = std::sqrt(e.sigma_l2);
-    e.sigma_div = std::sqrt(e.sigma_div);
+    const MPI_Comm comm = discretization.get_communicator();
+    e.u_l2      = std::sqrt(Utilities::MPI::sum(e.u_l2, comm));
+    e.u_h1_semi = std::sqrt(Utilities::MPI::sum(e.u_h1_semi, comm));
+    e.sigma_l2  = std::sqrt(Utilities::MPI::sum(e.sigma_l2, comm));
+    e.sigma_div = std::sqrt(Utilities::MPI::sum(e.sigma_div, comm));
     return e;
   }
 
 
   template <int dim>
   std::string
-  Postprocessor<dim>::contact_table(const Vector<double> &x) const
+  Postprocessor<dim>::contact_table(const LevelVector &x) const
   {
-    const auto &       level = discretization.level(discretization.finest_level());
-    std::ostringstream out;
-    out << (dim == 2 ? "x,y" : "x,y,z") << ",u_n,gap,sigma_nn,active\n";
-    out << std::setprecision(10);
-    // sigma_nn at a vertex: mean over the contact faces that contain it.
+    const auto &level = discretization.level(discretization.finest_level());
+    update_ghosts(x);
+    // sigma_nn at a vertex: mean over the contact faces that contain it
+    // (all of them are here for an owned vertex)
     std::map<unsigned int, std::pair<double, unsigned int>> face_mean;
     for (const auto &cell : discretization.get_dof_handler()
                               .mg_cell_iterators_on_level(discretization.finest_level()))
-      for (const unsigned int f : cell->face_indices())
-        if (cell->at_boundary(f) &&
-            discretization.get_scene().is_contact(cell->face(f)->boundary_id()))
-          {
-            const auto   face = cell->face(f);
-            const double s    = x[level.face_dofs.at(face->index())[0]];
-            for (const unsigned int v : face->vertex_indices())
-              {
-                auto &entry = face_mean[face->vertex_index(v)];
-                entry.first += s;
-                entry.second += 1;
-              }
-          }
+      if (Discretization<dim>::is_present(cell))
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f) &&
+              discretization.get_scene().is_contact(cell->face(f)->boundary_id()))
+            {
+              const auto   face = cell->face(f);
+              const double s = x.local_element(level.face_dofs.at(face->index())[0]);
+              for (const unsigned int v : face->vertex_indices())
+                {
+                  auto &entry = face_mean[face->vertex_index(v)];
+                  entry.first += s;
+                  entry.second += 1;
+                }
+            }
+    // the rows of the owned contact vertices: position, u_n, gap,
+    // sigma_nn, active
+    std::vector<std::array<double, dim + 4>> rows;
     for (const auto &cv : level.contact_vertices)
+      if (cv.owned)
+        {
+          const double un = x.local_element(cv.normal_dof);
+          const auto   it = face_mean.find(cv.vertex_index);
+          const double snn =
+            it == face_mean.end() ? 0. : it->second.first / it->second.second;
+          std::array<double, dim + 4> row;
+          for (unsigned int d = 0; d < dim; ++d)
+            row[d] = cv.point[d];
+          row[dim]     = un;
+          row[dim + 1] = cv.gap;
+          row[dim + 2] = snn;
+          row[dim + 3] = un >= cv.gap - 1e-12 * std::max(1., std::abs(cv.gap)) ? 1 : 0;
+          rows.push_back(row);
+        }
+    const auto all = Utilities::MPI::gather(discretization.get_communicator(), rows, 0);
+    std::ostringstream out;
+    if (Utilities::MPI::this_mpi_process(discretization.get_communicator()) != 0)
+      return out.str();
+    rows.clear();
+    for (const auto &part : all)
+      rows.insert(rows.end(), part.begin(), part.end());
+    std::sort(rows.begin(), rows.end(), [](const auto &a, const auto &b) {
+      return std::lexicographical_compare(a.begin(), a.begin() + dim, b.begin(), b.begin() + dim);
+    });
+    out << (dim == 2 ? "x,y" : "x,y,z") << ",u_n,gap,sigma_nn,active\n";
+    out << std::setprecision(10);
+    for (const auto &row : rows)
       {
-        const double un = x[cv.normal_dof];
-        const auto   it = face_mean.find(cv.vertex_index);
-        const double snn =
-          it == face_mean.end() ? 0. : it->second.first / it->second.second;
-        for (unsigned int d = 0; d < dim; ++d)
-          out << cv.point[d] << ',';
-        out << un << ',' << cv.gap << ',' << snn << ','
-            << (un >= cv.gap - 1e-12 * std::max(1., std::abs(cv.gap)) ? 1 : 0)
-            << '\n';
+        for (unsigned int d = 0; d < dim + 3; ++d)
+          out << row[d] << ',';
+        out << int(row[dim + 3]) << '\n';
       }
     return out.str();
   }
@@ -226,23 +256,34 @@ namespace FoslsContact
 
   template <int dim>
   void
-  Postprocessor<dim>::write(const Vector<double> &                     x,
+  Postprocessor<dim>::write(const LevelVector &                        x,
                             const Monitor &                            monitor,
                             const std::map<std::string, std::string> &summary,
                             const std::string &used_parameters) const
   {
     namespace fs = std::filesystem;
-    const fs::path directory(parameters.output.directory);
-    fs::create_directories(directory);
+    const MPI_Comm     comm  = discretization.get_communicator();
+    const bool         first = Utilities::MPI::this_mpi_process(comm) == 0;
+    const fs::path     directory(parameters.output.directory);
+    // the first process makes the staging directory (its process id names
+    // it), the others write their pieces into it once it is there
     const fs::path staging =
-      directory / (".staging-" + std::to_string(::getpid()));
-    fs::remove_all(staging);
-    fs::create_directories(staging);
+      directory / (".staging-" +
+                   std::to_string(Utilities::MPI::broadcast(comm, int(::getpid()), 0)));
+    if (first)
+      {
+        fs::create_directories(directory);
+        fs::remove_all(staging);
+        fs::create_directories(staging);
+      }
+    const int ierr = MPI_Barrier(comm);
+    AssertThrowMPI(ierr);
 
     std::vector<std::string> files;
+    const std::string table = contact_table(x); // (collective)
     if (parameters.output.write_vtu)
       {
-        const Vector<double> solution = cartesian_active(x);
+        const LevelVector solution = cartesian_active(x);
         DataOut<dim>         data_out;
         data_out.attach_dof_handler(discretization.get_dof_handler());
         std::vector<std::string> names(dim, "u");
@@ -274,12 +315,15 @@ namespace FoslsContact
           std::vector<Tensor<2, dim>>      sigma(quadrature.size());
           const auto &level = discretization.level(discretization.finest_level());
           std::map<unsigned int, bool> active_vertex;
+          update_ghosts(x);
           for (const auto &cv : level.contact_vertices)
             active_vertex[cv.vertex_index] =
-              x[cv.normal_dof] >= cv.gap - 1e-12 * std::max(1., std::abs(cv.gap));
+              x.local_element(cv.normal_dof) >= cv.gap - 1e-12 * std::max(1., std::abs(cv.gap));
           for (const auto &cell :
                discretization.get_dof_handler().active_cell_iterators())
             {
+              if (!cell->is_locally_owned())
+                continue;
               fe_values.reinit(cell);
               std::vector<SymmetricTensor<2, dim>> sym(quadrature.size());
               fe_values[displacement].get_function_symmetric_gradients(solution, sym);
@@ -321,13 +365,20 @@ namespace FoslsContact
         DataOutBase::VtkFlags flags;
         flags.compression_level = DataOutBase::VtkFlags::best_speed;
         data_out.set_flags(flags);
+        // one piece per process
         const std::string pvtu = data_out.write_vtu_with_pvtu_record(
-          staging.string() + "/", "solution", 0, MPI_COMM_WORLD, 4);
+          staging.string() + "/", "solution", 0, comm, 4);
         files.push_back(pvtu);
-        files.push_back("solution_0000.0.vtu");
+        for (unsigned int p = 0; p < Utilities::MPI::n_mpi_processes(comm); ++p)
+          files.push_back("solution_0000." + std::to_string(p) + ".vtu");
       }
+    // every piece is written before the first process moves them
+    const int ierr_pieces = MPI_Barrier(comm);
+    AssertThrowMPI(ierr_pieces);
+    if (!first)
+      return;
 
-    write_file(staging / "contact.csv", contact_table(x));
+    write_file(staging / "contact.csv", table);
     files.push_back("contact.csv");
     write_file(staging / "convergence.csv", monitor.csv());
     files.push_back("convergence.csv");

@@ -16,15 +16,19 @@ namespace FoslsContact
     matrix.reinit(level.sparsity);
     matrix_eq.reinit(level.sparsity);
     matrix_compl.reinit(level.sparsity);
-    rhs.reinit(level.n_dofs);
-    rhs_eq.reinit(level.n_dofs);
-    rhs_compl.reinit(level.n_dofs);
+    partitioner = level.partitioner;
+    ghost_rows  = &level.ghost_rows;
+    rhs.reinit(partitioner);
+    rhs_eq.reinit(partitioner);
+    rhs_compl.reinit(partitioner);
     constant = constant_eq = 0;
     coupling_sparsity = &level.sparsity;
     role         = level.role;
     dimension    = dim;
     fixed_values = level.fixed_values;
     upper_bounds = level.upper_bounds;
+    update_ghosts(fixed_values);
+    update_ghosts(upper_bounds);
   }
 
   template void ConstrainedQP::reinit(const LevelData<2> &);
@@ -61,21 +65,35 @@ namespace FoslsContact
   } // namespace
 
 
+  LevelVector
+  diagonal(const SparseMatrix<double> &                                matrix,
+           const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner)
+  {
+    LevelVector d(partitioner);
+    for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+      d.local_element(i) = matrix.diag_element(i);
+    update_ghosts(d);
+    return d;
+  }
+
+
   void
-  zero_round_off(SparseMatrix<double> &matrix, const double drop)
+  zero_round_off(SparseMatrix<double> &                                     matrix,
+                 const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+                 const double                                               drop)
   {
     // The rule treats a_ij and a_ji alike, so a symmetric pattern stays
     // symmetric unless one of them is within round-off of the threshold
     // (measured on A: all entries are below 1e-15 or above 1e-8 of
-    // sqrt(a_ii a_jj); the patch coloring does not rely on symmetry).
-    const auto          n = matrix.m();
-    std::vector<double> root_diagonal(n);
-    for (types::global_dof_index i = 0; i < n; ++i)
-      root_diagonal[i] = std::sqrt(std::abs(matrix.diag_element(i)));
+    // sqrt(a_ii a_jj); the patch colors do not rely on symmetry).
+    const LevelVector   d = diagonal(matrix, partitioner);
+    std::vector<double> root_diagonal(d.locally_owned_size() + partitioner->n_ghost_indices());
+    for (unsigned int i = 0; i < root_diagonal.size(); ++i)
+      root_diagonal[i] = std::sqrt(std::abs(d.local_element(i)));
     parallel::apply_to_subranges(
-      types::global_dof_index(0),
-      types::global_dof_index(n),
-      [&](const types::global_dof_index begin, const types::global_dof_index end) {
+      0u,
+      partitioner->locally_owned_size(),
+      [&](const unsigned int begin, const unsigned int end) {
         for (auto i = begin; i < end; ++i)
           for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
             if (std::abs(e->value()) <= drop * root_diagonal[i] * root_diagonal[e->column()])
@@ -88,7 +106,8 @@ namespace FoslsContact
   void
   ConstrainedQP::compress_matrices()
   {
-    zero_round_off(matrix, round_off_drop);
+    zero_round_off(matrix, partitioner, round_off_drop);
+    ghost_rows->import_into(matrix);
     compress(matrix, sparsity);
     compress(matrix_eq, sparsity_eq);
     compress(matrix_compl, sparsity_compl);
@@ -139,7 +158,7 @@ namespace FoslsContact
      */
     template <typename T, typename Function>
     std::vector<T>
-    sum_over_row_blocks(const types::global_dof_index n, const Function &add_row)
+    sum_over_row_blocks(const unsigned int n, const Function &add_row)
     {
       const types::global_dof_index block = 4096;
       std::vector<T>                partial((n + block - 1) / block, T());
@@ -169,23 +188,35 @@ namespace FoslsContact
      */
     double
     accurate_quadratic(const SparseMatrix<double> &M,
-                       const Vector<double> &      x,
-                       const Vector<double> &      b,
+                       const LevelVector &         x,
+                       const LevelVector &         b,
                        const double                c)
     {
+      update_ghosts(x);
       const auto partial = sum_over_row_blocks<CompensatedSum>(
-        x.size(), [&](CompensatedSum &sum, const types::global_dof_index i) {
+        x.locally_owned_size(), [&](CompensatedSum &sum, const unsigned int i) {
           // (M x)_i in twice the precision, times x_i / 2
+          const double   xi = x.local_element(i);
           CompensatedSum row;
           for (auto e = M.begin(i); e != M.end(i); ++e)
-            row.add_product(e->value(), x[e->column()]);
-          sum.add_product(0.5 * x[i], row.sum);
-          sum.add(0.5 * x[i] * row.error);
-          sum.add_product(-b[i], x[i]);
+            row.add_product(e->value(), x.local_element(e->column()));
+          sum.add_product(0.5 * xi, row.sum);
+          sum.add(0.5 * xi * row.error);
+          sum.add_product(-b.local_element(i), xi);
         });
-      CompensatedSum total;
+      CompensatedSum local;
       for (const auto &p : partial)
-        total.add(p);
+        local.add(p);
+      // the processes' sums, added in the order of the ranks (the same on
+      // every process)
+      const auto all = Utilities::MPI::all_gather(x.get_mpi_communicator(),
+                                                  std::make_pair(local.sum, local.error));
+      CompensatedSum total;
+      for (const auto &[sum, error] : all)
+        {
+          total.add(sum);
+          total.error += error;
+        }
       total.add(c);
       return total.value();
     }
@@ -193,14 +224,14 @@ namespace FoslsContact
 
 
   double
-  ConstrainedQP::value(const Vector<double> &x) const
+  ConstrainedQP::value(const LevelVector &x) const
   {
     return accurate_quadratic(matrix, x, rhs, constant);
   }
 
 
   FunctionalValue
-  ConstrainedQP::parts(const Vector<double> &x) const
+  ConstrainedQP::parts(const LevelVector &x) const
   {
     FunctionalValue v;
     v.total = value(x);
@@ -212,124 +243,136 @@ namespace FoslsContact
 
 
   void
-  ConstrainedQP::project_to_feasible(Vector<double> &x) const
+  ConstrainedQP::project_to_feasible(LevelVector &x) const
   {
-    for (types::global_dof_index i = 0; i < x.size(); ++i)
+    for (unsigned int i = 0; i < role.size(); ++i)
       if (role[i] == DoFRole::fixed)
-        x[i] = fixed_values[i];
+        x.local_element(i) = fixed_values.local_element(i);
       else if (role[i] == DoFRole::bounded)
-        x[i] = std::min(x[i], upper_bounds[i]);
+        x.local_element(i) = std::min(x.local_element(i), upper_bounds.local_element(i));
   }
 
 
   double
-  ConstrainedQP::max_violation(const Vector<double> &x) const
+  ConstrainedQP::max_violation(const LevelVector &x) const
   {
     double v = 0;
-    for (types::global_dof_index i = 0; i < x.size(); ++i)
+    for (unsigned int i = 0; i < n_owned(); ++i)
       if (role[i] == DoFRole::fixed)
-        v = std::max(v, std::abs(x[i] - fixed_values[i]));
+        v = std::max(v, std::abs(x.local_element(i) - fixed_values.local_element(i)));
       else if (role[i] == DoFRole::bounded)
-        v = std::max(v, x[i] - upper_bounds[i]);
-    return v;
+        v = std::max(v, x.local_element(i) - upper_bounds.local_element(i));
+    return Utilities::MPI::max(v, get_communicator());
   }
 
 
   std::vector<bool>
-  ConstrainedQP::active_set(const Vector<double> &x) const
+  ConstrainedQP::active_set(const LevelVector &x) const
   {
-    std::vector<bool> active(x.size(), false);
-    for (types::global_dof_index i = 0; i < x.size(); ++i)
-      active[i] = role[i] == DoFRole::bounded && x[i] >= upper_bounds[i];
+    std::vector<bool> active(n_owned(), false);
+    for (unsigned int i = 0; i < n_owned(); ++i)
+      active[i] = role[i] == DoFRole::bounded &&
+                  x.local_element(i) >= upper_bounds.local_element(i);
     return active;
   }
 
 
   unsigned int
-  ConstrainedQP::n_active(const Vector<double> &x) const
+  ConstrainedQP::n_active(const LevelVector &x) const
   {
     const std::vector<bool> active = active_set(x);
-    return std::count(active.begin(), active.end(), true);
+    return Utilities::MPI::sum(
+      static_cast<unsigned int>(std::count(active.begin(), active.end(), true)),
+      get_communicator());
   }
 
 
   KKTResidual
-  ConstrainedQP::kkt_residual(const Vector<double> &x) const
+  ConstrainedQP::kkt_residual(const LevelVector &x) const
   {
     // For x_i <= ub_i the multiplier is mu_i = (b - A x)_i >= 0; it must
     // vanish where the bound is not attained.
-    Vector<double> g(x.size());
-    matrix.vmult(g, x);
+    LevelVector g = new_vector();
+    vmult(matrix, g, x);
     g -= rhs;
     // relative to the size of the terms of each row, sum_j |A_ij x_j|, so
     // that the residual is meaningful also when b = 0 (pure Dirichlet data)
     double scale = rhs.linfty_norm();
-    for (types::global_dof_index i = 0; i < x.size(); ++i)
-      if (role[i] != DoFRole::fixed)
-        {
-          double row = 0;
-          for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
-            row += std::abs(e->value() * x[e->column()]);
-          scale = std::max(scale, row);
-        }
-    scale = std::max(scale, 1e-300);
-    double       bound_scale = 1;
-    for (types::global_dof_index i = 0; i < x.size(); ++i)
-      if (role[i] == DoFRole::bounded)
-        bound_scale = std::max(bound_scale, std::abs(upper_bounds[i]));
+    double local_scale = 0, bound_scale = 1;
+    for (unsigned int i = 0; i < n_owned(); ++i)
+      {
+        if (role[i] != DoFRole::fixed)
+          {
+            double row = 0;
+            for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
+              row += std::abs(e->value() * x.local_element(e->column()));
+            local_scale = std::max(local_scale, row);
+          }
+        if (role[i] == DoFRole::bounded)
+          bound_scale = std::max(bound_scale, std::abs(upper_bounds.local_element(i)));
+      }
+    const MPI_Comm comm = get_communicator();
+    scale       = std::max(std::max(scale, Utilities::MPI::max(local_scale, comm)), 1e-300);
+    bound_scale = Utilities::MPI::max(bound_scale, comm);
 
     KKTResidual r;
-    for (types::global_dof_index i = 0; i < x.size(); ++i)
-      switch (role[i])
-        {
-          case DoFRole::free:
-            r.stationarity = std::max(r.stationarity, std::abs(g[i]));
-            break;
-          case DoFRole::fixed:
-            r.feasibility =
-              std::max(r.feasibility, std::abs(x[i] - fixed_values[i]) / bound_scale);
-            break;
-          case DoFRole::bounded:
-            {
-              const double mu = std::max(0., -g[i]);
-              r.stationarity  = std::max(r.stationarity, std::max(0., g[i]));
-              r.feasibility =
-                std::max(r.feasibility, std::max(0., x[i] - upper_bounds[i]) / bound_scale);
-              r.complementarity =
-                std::max(r.complementarity,
-                         mu * std::abs(upper_bounds[i] - x[i]) / bound_scale);
+    for (unsigned int i = 0; i < n_owned(); ++i)
+      {
+        const double gi = g.local_element(i), xi = x.local_element(i);
+        switch (role[i])
+          {
+            case DoFRole::free:
+              r.stationarity = std::max(r.stationarity, std::abs(gi));
               break;
-            }
-        }
-    r.stationarity /= scale;
-    r.complementarity /= scale;
+            case DoFRole::fixed:
+              r.feasibility = std::max(r.feasibility,
+                                       std::abs(xi - fixed_values.local_element(i)) / bound_scale);
+              break;
+            case DoFRole::bounded:
+              {
+                const double ub = upper_bounds.local_element(i);
+                const double mu = std::max(0., -gi);
+                r.stationarity  = std::max(r.stationarity, std::max(0., gi));
+                r.feasibility =
+                  std::max(r.feasibility, std::max(0., xi - ub) / bound_scale);
+                r.complementarity =
+                  std::max(r.complementarity, mu * std::abs(ub - xi) / bound_scale);
+                break;
+              }
+          }
+      }
+    r.stationarity    = Utilities::MPI::max(r.stationarity, comm) / scale;
+    r.feasibility     = Utilities::MPI::max(r.feasibility, comm);
+    r.complementarity = Utilities::MPI::max(r.complementarity, comm) / scale;
     return r;
   }
 
 
   double
-  ConstrainedQP::energy_norm(const Vector<double> &d) const
+  ConstrainedQP::energy_norm(const LevelVector &d) const
   {
-    return std::sqrt(std::max(0., matrix.matrix_norm_square(d)));
+    return std::sqrt(std::max(0., matrix_norm_square(matrix, d)));
   }
 
 
   double
-  ConstrainedQP::round_off_correction(const Vector<double> &x) const
+  ConstrainedQP::round_off_correction(const LevelVector &x) const
   {
+    update_ghosts(x);
     const auto partial = sum_over_row_blocks<double>(
-      x.size(), [&](double &sum, const types::global_dof_index i) {
+      n_owned(), [&](double &sum, const unsigned int i) {
         if (role[i] != DoFRole::fixed && matrix.diag_element(i) > 0)
           {
-            double s = std::abs(rhs[i]);
+            double s = std::abs(rhs.local_element(i));
             for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
-              s += std::abs(e->value() * x[e->column()]);
+              s += std::abs(e->value() * x.local_element(e->column()));
             sum += s * s / matrix.diag_element(i);
           }
       });
     double sum = 0;
     for (const double p : partial)
       sum += p;
+    sum = Utilities::MPI::sum(sum, get_communicator());
     return std::numeric_limits<double>::epsilon() * std::sqrt(sum) *
            std::pow(double(x.size()), 1. / dimension);
   }

@@ -27,25 +27,25 @@ namespace FoslsContact
         if (qp.role[i] != DoFRole::free || qp.role[e->column()] != DoFRole::free)
           e->value() = (i == e->column()) ? 1. : 0.;
     SparseDirectSolver direct;
-    direct.initialize(M, qp.coupling_sparsity);
+    direct.initialize(M, qp.partitioner, qp.coupling_sparsity);
 
     const unsigned int       nc = contact.size();
     LAPACKFullMatrix<double> S(nc, nc);
-    Vector<double>           column(n), y(n), Ay(n);
+    LevelVector column = qp.new_vector(), y = qp.new_vector(), Ay = qp.new_vector();
     for (unsigned int c = 0; c < nc; ++c)
       {
         // column = A_IC e_c
         column = 0;
         for (auto e = A.begin(contact[c]); e != A.end(contact[c]); ++e)
           if (qp.role[e->column()] == DoFRole::free)
-            column[e->column()] = e->value(); // A symmetric
+            column.local_element(e->column()) = e->value(); // A symmetric
         direct.vmult(y, column);
         for (types::global_dof_index i = 0; i < n; ++i)
           if (qp.role[i] != DoFRole::free)
-            y[i] = 0;
-        A.vmult(Ay, y);
+            y.local_element(i) = 0;
+        vmult(A, Ay, y);
         for (unsigned int r = 0; r < nc; ++r)
-          S(r, c) = A.el(contact[r], contact[c]) - Ay[contact[r]];
+          S(r, c) = A.el(contact[r], contact[c]) - Ay.local_element(contact[r]);
       }
     for (unsigned int r = 0; r < nc; ++r)
       for (unsigned int c = 0; c < nc; ++c)

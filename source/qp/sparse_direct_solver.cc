@@ -1,4 +1,5 @@
 #include <deal.II/base/index_set.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <fosls_contact/qp/sparse_direct_solver.h>
 
@@ -10,30 +11,60 @@ namespace FoslsContact
 
 
   void
-  SparseDirectSolver::initialize(const SparseMatrix<double> &A,
-                                 const SparsityPattern *     pattern)
+  SparseDirectSolver::initialize(const SparseMatrix<double> &                               A,
+                                 const std::shared_ptr<const Utilities::MPI::Partitioner> &p,
+                                 const SparsityPattern *pattern)
   {
+    partitioner              = p;
+    const MPI_Comm     comm  = p->get_mpi_communicator();
+    const IndexSet &   owned = p->locally_owned_range();
+    const unsigned int n     = p->locally_owned_size();
+    const SparsityPattern &structure = pattern ? *pattern : A.get_sparsity_pattern();
+
+    TrilinosWrappers::SparsityPattern sp(owned, owned, comm);
+    std::vector<types::global_dof_index> columns;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        columns.clear();
+        for (auto e = structure.begin(i); e != structure.end(i); ++e)
+          columns.push_back(p->local_to_global(e->column()));
+        sp.add_entries(p->local_to_global(i), columns.begin(), columns.end());
+      }
+    sp.compress();
     matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
-    // (deal.II's default drop tolerance of the copy, 1e-13, on the values)
-    matrix->reinit(A, 1e-13, true, pattern);
+    matrix->reinit(sp);
+    std::vector<double> values;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        columns.clear();
+        values.clear();
+        for (auto e = A.begin(i); e != A.end(i); ++e)
+          // (deal.II's default drop tolerance of a matrix copy, on the values)
+          if (std::abs(e->value()) > 1e-13)
+            {
+              columns.push_back(p->local_to_global(e->column()));
+              values.push_back(e->value());
+            }
+        matrix->set(p->local_to_global(i), columns.size(), columns.data(), values.data());
+      }
+    matrix->compress(VectorOperation::insert);
     solver = std::make_unique<TrilinosWrappers::SolverDirect>(
       control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
     solver->initialize(*matrix);
-    const IndexSet all = complete_index_set(A.m());
-    x_t.reinit(all, MPI_COMM_SELF);
-    b_t.reinit(all, MPI_COMM_SELF);
+    x_t.reinit(owned, comm);
+    b_t.reinit(owned, comm);
   }
 
 
   void
-  SparseDirectSolver::vmult(Vector<double> &x, const Vector<double> &b) const
+  SparseDirectSolver::vmult(LevelVector &x, const LevelVector &b) const
   {
-    for (types::global_dof_index i = 0; i < b.size(); ++i)
-      b_t[i] = b[i];
+    const unsigned int n = partitioner->locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      b_t[partitioner->local_to_global(i)] = b.local_element(i);
     b_t.compress(VectorOperation::insert);
     solver->solve(x_t, b_t);
-    x.reinit(b.size());
-    for (types::global_dof_index i = 0; i < b.size(); ++i)
-      x[i] = x_t[i];
+    for (unsigned int i = 0; i < n; ++i)
+      x.local_element(i) = x_t[partitioner->local_to_global(i)];
   }
 } // namespace FoslsContact

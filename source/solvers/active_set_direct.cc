@@ -3,7 +3,6 @@
 #include <fosls_contact/solvers/active_set_direct.h>
 
 #include <limits>
-#include <set>
 
 namespace FoslsContact
 {
@@ -13,34 +12,35 @@ namespace FoslsContact
      * One step of the primal-dual active set method: solve A x = b on the
      * inactive set, with x fixed on fixed DoFs and x = ub on the active
      * set. The fixed rows and columns are eliminated symmetrically.
+     * @p eliminated: all local DoFs (owned and ghost).
      */
     void
     solve_reduced(const SparseMatrix<double> &A,
                   const SparsityPattern *     factorization_pattern,
-                  const Vector<double> &      b,
+                  const LevelVector &         b,
                   const std::vector<bool> &   eliminated,
-                  Vector<double> &            x)
+                  LevelVector &               x)
     {
+      const auto &       partitioner = x.get_partitioner();
+      const unsigned int n_owned     = x.locally_owned_size();
       SparseMatrix<double> M(A.get_sparsity_pattern());
       M.copy_from(A);
-      Vector<double> rhs(b);
       // rhs -= A(:, E) x_E, then identity rows/columns on E.
-      Vector<double> xe(x.size());
-      for (types::global_dof_index i = 0; i < x.size(); ++i)
+      LevelVector rhs(b), xe(partitioner), tmp(partitioner);
+      for (unsigned int i = 0; i < n_owned; ++i)
         if (eliminated[i])
-          xe[i] = x[i];
-      Vector<double> tmp(x.size());
-      A.vmult(tmp, xe);
+          xe.local_element(i) = x.local_element(i);
+      vmult(A, tmp, xe);
       rhs -= tmp;
-      for (types::global_dof_index i = 0; i < x.size(); ++i)
+      for (unsigned int i = 0; i < n_owned; ++i)
         for (auto e = M.begin(i); e != M.end(i); ++e)
           if (eliminated[i] || eliminated[e->column()])
             e->value() = (i == e->column()) ? 1. : 0.;
-      for (types::global_dof_index i = 0; i < x.size(); ++i)
+      for (unsigned int i = 0; i < n_owned; ++i)
         if (eliminated[i])
-          rhs[i] = x[i];
+          rhs.local_element(i) = x.local_element(i);
       SparseDirectSolver direct;
-      direct.initialize(M, factorization_pattern);
+      direct.initialize(M, partitioner, factorization_pattern);
       direct.vmult(x, rhs);
     }
   } // namespace
@@ -48,40 +48,62 @@ namespace FoslsContact
 
   ActiveSetDirect::Outcome
   ActiveSetDirect::iterate(const SparseMatrix<double> &A,
-                           const Vector<double> &      b,
+                           const LevelVector &         b,
                            const std::vector<DoFRole> &role,
-                           const Vector<double> &      ub,
-                           Vector<double> &            x,
+                           const LevelVector &         ub,
+                           LevelVector &               x,
                            const unsigned int          max_steps,
                            Monitor *                   monitor,
                            const SparsityPattern *     factorization_pattern)
   {
-    const auto        n = x.size();
-    std::vector<bool> eliminated(n), active(n, false), previous;
-    Vector<double>    mu(n), Ax(n), x_old;
-    std::set<std::vector<bool>> seen;
+    const auto &       partitioner = x.get_partitioner();
+    const unsigned int n_owned     = x.locally_owned_size();
+    const MPI_Comm     comm        = x.get_mpi_communicator();
+    std::vector<bool>  eliminated(role.size(), false), active(n_owned, false), previous;
+    LevelVector        mu(partitioner), Ax(partitioner), x_old;
+    // the local active sets of the earlier steps: an active set came back
+    // when it came back on every process
+    std::vector<std::vector<bool>> seen;
     for (unsigned int step = 0; step < max_steps; ++step)
       {
-        for (types::global_dof_index i = 0; i < n; ++i)
+        for (unsigned int i = 0; i < n_owned; ++i)
           {
             const bool zero_diagonal = A.diag_element(i) <= 0.;
             if (role[i] == DoFRole::bounded && !zero_diagonal)
-              active[i] = mu[i] + A.diag_element(i) * (x[i] - ub[i]) > 0;
+              active[i] = mu.local_element(i) +
+                            A.diag_element(i) * (x.local_element(i) - ub.local_element(i)) >
+                          0;
             eliminated[i] = role[i] == DoFRole::fixed || zero_diagonal || active[i];
             if (active[i])
-              x[i] = ub[i];
+              x.local_element(i) = ub.local_element(i);
           }
-        if (step > 0 && active == previous)
+        {
+          std::vector<unsigned char> e(eliminated.begin(), eliminated.end());
+          exchange_ghosts(partitioner, e);
+          std::copy(e.begin(), e.end(), eliminated.begin());
+        }
+        const bool unchanged = step > 0 && active == previous;
+        if (Utilities::MPI::min(unchanged ? 1u : 0u, comm) == 1)
           return Outcome::converged;
-        if (!seen.insert(active).second)
+        std::vector<unsigned int> same(seen.size());
+        for (unsigned int s = 0; s < seen.size(); ++s)
+          same[s] = seen[s] == active ? 1 : 0;
+        if (!same.empty())
+          {
+            const int ierr =
+              MPI_Allreduce(MPI_IN_PLACE, same.data(), same.size(), MPI_UNSIGNED, MPI_MIN, comm);
+            AssertThrowMPI(ierr);
+          }
+        if (std::find(same.begin(), same.end(), 1u) != same.end())
           return Outcome::cycling;
+        seen.push_back(active);
         previous = active;
         if (monitor)
           x_old = x;
         solve_reduced(A, factorization_pattern, b, eliminated, x);
-        A.vmult(Ax, x);
-        for (types::global_dof_index i = 0; i < n; ++i)
-          mu[i] = active[i] ? b[i] - Ax[i] : 0.;
+        vmult(A, Ax, x);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          mu.local_element(i) = active[i] ? b.local_element(i) - Ax.local_element(i) : 0.;
         // The iterate of a PDAS step may be infeasible until the last
         // step; it is reported as it is. The monitor's own stopping rule
         // does not end the method (only the repeated active set does),
@@ -95,10 +117,10 @@ namespace FoslsContact
 
   bool
   ActiveSetDirect::solve_quietly(const SparseMatrix<double> &A,
-                                 const Vector<double> &      b,
+                                 const LevelVector &         b,
                                  const std::vector<DoFRole> &role,
-                                 const Vector<double> &      ub,
-                                 Vector<double> &            x,
+                                 const LevelVector &         ub,
+                                 LevelVector &               x,
                                  const unsigned int          max_steps)
   {
     // A repeated active set means the method cycles: the last solve is the
@@ -109,9 +131,10 @@ namespace FoslsContact
 
   void
   ActiveSetDirect::solve(const ConstrainedQP &qp,
-                         Vector<double> &     x,
+                         LevelVector &        x,
                          Monitor &            monitor)
   {
+    update_ghosts(x);
     qp.project_to_feasible(x);
     monitor.start(x);
     const Outcome outcome = iterate(qp.matrix,

@@ -1,27 +1,132 @@
 #include <fosls_contact/solvers/galerkin_product.h>
 
+#include <deal.II/base/mpi.templates.h>
 #include <deal.II/base/parallel.h>
 #include <deal.II/base/thread_local_storage.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <map>
+#include <set>
 
 namespace FoslsContact
 {
   void
-  GalerkinProduct::initialize(const SparsityPattern &pattern)
+  GalerkinProduct::initialize(
+    const SparsityPattern &                                    pattern,
+    const SparsityPattern &                                    fine_pattern,
+    const std::shared_ptr<const Utilities::MPI::Partitioner> &fine_partitioner,
+    const SparsityPattern &                                    coarse_pattern,
+    const std::shared_ptr<const Utilities::MPI::Partitioner> &coarse_partitioner)
   {
-    n_coarse = pattern.n_cols();
-    transpose_start.assign(n_coarse + 1, 0);
-    for (auto e = pattern.begin(); e != pattern.end(); ++e)
-      ++transpose_start[e->column() + 1];
-    for (unsigned int j = 0; j < n_coarse; ++j)
+    comm                       = coarse_partitioner->get_mpi_communicator();
+    const unsigned int n_owned = fine_partitioner->locally_owned_size();
+    n_coarse_local             = pattern.n_cols();
+    n_coarse_owned             = coarse_partitioner->locally_owned_size();
+
+    // the columns of the owned rows of P
+    transpose_start.assign(n_coarse_local + 1, 0);
+    for (unsigned int r = 0; r < n_owned; ++r)
+      for (auto e = pattern.begin(r); e != pattern.end(r); ++e)
+        ++transpose_start[e->column() + 1];
+    for (unsigned int j = 0; j < n_coarse_local; ++j)
       transpose_start[j + 1] += transpose_start[j];
     transpose_row.resize(transpose_start.back());
     transpose_position.resize(transpose_start.back());
     std::vector<std::size_t> next(transpose_start.begin(), transpose_start.end() - 1);
-    for (auto e = pattern.begin(); e != pattern.end(); ++e)
+    for (unsigned int r = 0; r < n_owned; ++r)
+      for (auto e = pattern.begin(r); e != pattern.end(r); ++e)
+        {
+          const auto k          = next[e->column()]++;
+          transpose_row[k]      = r;
+          transpose_position[k] = e->global_index();
+        }
+
+    // A P on the owned rows of A
+    {
+      DynamicSparsityPattern dsp(n_owned, n_coarse_local);
+      for (unsigned int r = 0; r < n_owned; ++r)
+        for (auto a = fine_pattern.begin(r); a != fine_pattern.end(r); ++a)
+          for (auto p = pattern.begin(a->column()); p != pattern.end(a->column()); ++p)
+            dsp.add(r, p->column());
+      product_sparsity.copy_from(dsp);
+      product.reinit(product_sparsity);
+    }
+
+    // the columns of each owned coarse row outside the result's pattern
+    extra_start.assign(1, 0);
+    extra_columns.clear();
+    for (unsigned int j = 0; j < n_coarse_owned; ++j)
       {
-        const auto k           = next[e->column()]++;
-        transpose_row[k]       = e->row();
-        transpose_position[k]  = e->global_index();
+        std::set<unsigned int> columns;
+        for (std::size_t k = transpose_start[j]; k < transpose_start[j + 1]; ++k)
+          for (auto e = product_sparsity.begin(transpose_row[k]);
+               e != product_sparsity.end(transpose_row[k]);
+               ++e)
+            if (!coarse_pattern.exists(j, e->column()))
+              columns.insert(e->column());
+        extra_columns.insert(extra_columns.end(), columns.begin(), columns.end());
+        extra_start.push_back(extra_columns.size());
+      }
+
+    // the ghost coarse rows that get parts here, and their columns
+    ghost_row.clear();
+    ghost_start.assign(1, 0);
+    ghost_columns.clear();
+    for (unsigned int j = n_coarse_owned; j < n_coarse_local; ++j)
+      {
+        std::set<unsigned int> columns;
+        for (std::size_t k = transpose_start[j]; k < transpose_start[j + 1]; ++k)
+          for (auto e = product_sparsity.begin(transpose_row[k]);
+               e != product_sparsity.end(transpose_row[k]);
+               ++e)
+            columns.insert(e->column());
+        if (columns.empty())
+          continue;
+        ghost_row.push_back(j);
+        ghost_columns.insert(ghost_columns.end(), columns.begin(), columns.end());
+        ghost_start.push_back(ghost_columns.size());
+      }
+    ghost_values.resize(ghost_columns.size());
+
+    // who owns them (ghost rows are sorted by global index, the owners'
+    // ranges too), and the owners' view of the entries
+    send_to.clear();
+    receive_from.clear();
+    if (Utilities::MPI::n_mpi_processes(comm) == 1)
+      return;
+    std::vector<types::global_dof_index> rows;
+    for (const unsigned int j : ghost_row)
+      rows.push_back(coarse_partitioner->local_to_global(j));
+    const std::vector<unsigned int> owner = owners(*coarse_partitioner, rows);
+    std::map<unsigned int, std::vector<types::global_dof_index>> entries;
+    for (unsigned int r = 0; r < ghost_row.size(); ++r)
+      {
+        if (send_to.empty() || send_to.back().first != owner[r])
+          send_to.push_back({owner[r], {r, r}});
+        send_to.back().second.second = r + 1;
+        for (std::size_t k = ghost_start[r]; k < ghost_start[r + 1]; ++k)
+          {
+            entries[owner[r]].push_back(rows[r]);
+            entries[owner[r]].push_back(coarse_partitioner->local_to_global(ghost_columns[k]));
+          }
+      }
+    const auto received = Utilities::MPI::some_to_some(comm, entries);
+    for (const auto &[rank, list] : received)
+      {
+        std::vector<std::pair<unsigned int, unsigned int>> positions;
+        for (std::size_t k = 0; k + 1 < list.size(); k += 2)
+          {
+            const unsigned int row = coarse_partitioner->global_to_local(list[k]);
+            unsigned int       col = numbers::invalid_unsigned_int;
+            if (coarse_partitioner->in_local_range(list[k + 1]) ||
+                coarse_partitioner->is_ghost_entry(list[k + 1]))
+              col = coarse_partitioner->global_to_local(list[k + 1]);
+            if (col == numbers::invalid_unsigned_int || !coarse_pattern.exists(row, col))
+              positions.emplace_back(numbers::invalid_unsigned_int, 0);
+            else
+              positions.emplace_back(row, col);
+          }
+        receive_from.emplace_back(rank, positions);
       }
   }
 
@@ -29,7 +134,6 @@ namespace FoslsContact
   void
   GalerkinProduct::compute(const SparseMatrix<double> &A,
                            const SparseMatrix<double> &P,
-                           SparseMatrix<double> &      product,
                            SparseMatrix<double> &      galerkin)
   {
     // the values of P in the order of its pattern (global_index)
@@ -45,14 +149,15 @@ namespace FoslsContact
       },
       1000);
 
-    // a dense row of length n_coarse per thread, kept zero between rows
+    // a dense row of length n_coarse_local per thread, kept zero between
+    // rows
     Threads::ThreadLocalStorage<std::vector<double>> dense_row(
-      std::vector<double>(n_coarse, 0.));
+      std::vector<double>(n_coarse_local, 0.));
 
-    // product = A P, row by row
+    // product = A P, by the owned rows of A
     parallel::apply_to_subranges(
       0u,
-      static_cast<unsigned int>(A.m()),
+      static_cast<unsigned int>(product.m()),
       [&](const unsigned int begin, const unsigned int end) {
         std::vector<double> &row = dense_row.get();
         for (unsigned int r = begin; r < end; ++r)
@@ -70,52 +175,115 @@ namespace FoslsContact
       },
       200);
 
-    // galerkin = P^T product, row j from the rows of product at column j
-    // of P
+    // row j of P^T product from the rows of product at column j of P; a
+    // nonzero left in the dense row after the row of the result is read
+    // off lies outside the result's pattern
+    auto row_of_result = [&](const unsigned int j, std::vector<double> &row) {
+      for (std::size_t k = transpose_start[j]; k < transpose_start[j + 1]; ++k)
+        {
+          const double p = P_values[transpose_position[k]];
+          if (p != 0.)
+            {
+              const unsigned int r = transpose_row[k];
+              for (auto e = product.begin(r); e != product.end(r); ++e)
+                row[e->column()] += p * e->value();
+            }
+        }
+    };
+    auto check_rest = [&](const unsigned int j, std::vector<double> &row) {
+      for (std::size_t k = extra_start[j]; k < extra_start[j + 1]; ++k)
+        {
+          AssertThrow(row[extra_columns[k]] == 0.,
+                      ExcMessage("GalerkinProduct: a coarse operator entry outside the "
+                                 "coupling pattern of the coarse cells"));
+        }
+    };
     parallel::apply_to_subranges(
       0u,
-      n_coarse,
+      n_coarse_owned,
       [&](const unsigned int begin, const unsigned int end) {
         std::vector<double> &row = dense_row.get();
         for (unsigned int j = begin; j < end; ++j)
           {
-            for (std::size_t k = transpose_start[j]; k < transpose_start[j + 1]; ++k)
-              {
-                const double p = P_values[transpose_position[k]];
-                if (p != 0.)
-                  {
-                    const unsigned int r = transpose_row[k];
-                    for (auto e = product.begin(r); e != product.end(r); ++e)
-                      row[e->column()] += p * e->value();
-                  }
-              }
+            row_of_result(j, row);
             for (auto e = galerkin.begin(j); e != galerkin.end(j); ++e)
               {
                 e->value()       = row[e->column()];
                 row[e->column()] = 0.;
               }
+            check_rest(j, row);
           }
       },
       100);
+    parallel::apply_to_subranges(
+      0u,
+      static_cast<unsigned int>(ghost_row.size()),
+      [&](const unsigned int begin, const unsigned int end) {
+        std::vector<double> &row = dense_row.get();
+        for (unsigned int r = begin; r < end; ++r)
+          {
+            row_of_result(ghost_row[r], row);
+            for (std::size_t k = ghost_start[r]; k < ghost_start[r + 1]; ++k)
+              {
+                ghost_values[k]          = row[ghost_columns[k]];
+                row[ghost_columns[k]]    = 0.;
+              }
+          }
+      },
+      100);
+
+    // the parts of the rows owned elsewhere to their owners, added here in
+    // the order of the sending processes
+    if (send_to.empty() && receive_from.empty())
+      return;
+    std::vector<std::vector<double>> receive_buffers(receive_from.size());
+    std::vector<std::pair<unsigned int, ArrayView<const double>>> to;
+    std::vector<std::pair<unsigned int, ArrayView<double>>>       from;
+    for (const auto &[rank, range] : send_to)
+      {
+        const std::size_t first = ghost_start[range.first], last = ghost_start[range.second];
+        to.emplace_back(rank, make_array_view(ghost_values.cbegin() + first,
+                                              ghost_values.cbegin() + last));
+      }
+    for (unsigned int s = 0; s < receive_from.size(); ++s)
+      {
+        receive_buffers[s].resize(receive_from[s].second.size());
+        from.emplace_back(receive_from[s].first, make_array_view(receive_buffers[s]));
+      }
+    exchange(comm, 4712, to, from);
+    for (unsigned int s = 0; s < receive_from.size(); ++s)
+      for (std::size_t k = 0; k < receive_buffers[s].size(); ++k)
+        {
+          const auto &[row, col] = receive_from[s].second[k];
+          if (row == numbers::invalid_unsigned_int)
+            {
+              AssertThrow(receive_buffers[s][k] == 0.,
+                          ExcMessage("GalerkinProduct: a coarse operator entry outside "
+                                     "the coupling pattern of the coarse cells"));
+            }
+          else if (receive_buffers[s][k] != 0.)
+            galerkin.add(row, col, receive_buffers[s][k]);
+        }
   }
 
 
   void
-  GalerkinProduct::Tvmult(Vector<double> &dst, const Vector<double> &src) const
+  GalerkinProduct::Tvmult(LevelVector &dst, const LevelVector &src) const
   {
-    AssertDimension(dst.size(), n_coarse);
     parallel::apply_to_subranges(
       0u,
-      n_coarse,
+      n_coarse_local,
       [&](const unsigned int begin, const unsigned int end) {
         for (unsigned int j = begin; j < end; ++j)
           {
             double sum = 0;
             for (std::size_t k = transpose_start[j]; k < transpose_start[j + 1]; ++k)
-              sum += P_values[transpose_position[k]] * src[transpose_row[k]];
-            dst[j] = sum;
+              sum += P_values[transpose_position[k]] * src.local_element(transpose_row[k]);
+            dst.local_element(j) = sum;
           }
       },
       500);
+    // the parts of the ghost entries to their owners (collective)
+    send_ghost_parts(dst, VectorOperation::add);
   }
 } // namespace FoslsContact

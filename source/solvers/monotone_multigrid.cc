@@ -3,6 +3,7 @@
 #include <fosls_contact/solvers/coarse_obstacles.h>
 #include <fosls_contact/solvers/monotone_multigrid.h>
 
+#include <deal.II/base/mpi.templates.h>
 #include <deal.II/base/parallel.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
@@ -26,14 +27,13 @@ namespace FoslsContact
     , fine_sparsity(&fine_sparsity)
     , finest(finest_level)
     , smoother(finest_level + 1)
-    , galerkin_sparsity(finest_level + 1)
-    , product_sparsity(finest_level + 1)
     , prolongation_sparsity(finest_level + 1)
     , face_scale(finest_level + 1)
     , galerkin(finest_level + 1)
-    , product(finest_level + 1)
     , truncated_prolongation(finest_level + 1)
     , galerkin_product(finest_level + 1)
+    , rerouting_import(finest_level + 1)
+    , rerouting_values(finest_level + 1)
     , scratch(finest_level + 1)
     , truncation_used(finest_level + 1)
     , version(finest_level + 1, 0)
@@ -41,36 +41,76 @@ namespace FoslsContact
     , reroute_used(finest_level + 1, false)
   {
     // The sparsity patterns of the truncated prolongations (P's pattern
-    // plus, in the column of each coarse contact face, the DoFs coupled to
-    // its sons, which the flux rerouting may use) and of their Galerkin
-    // products; they hold every truncated product, so the solve only
-    // recomputes values.
+    // plus the entries the flux rerouting may add) and the set-up of their
+    // Galerkin products, whose results lie on the coupling patterns of the
+    // coarse levels; the solve only recomputes values.
     for (unsigned int l = finest; l > 0; --l)
       {
-        const SparsityPattern &A = l == finest ? fine_sparsity : galerkin_sparsity[l];
+        const auto &           fine = hierarchy.level(l), &coarse = hierarchy.level(l - 1);
+        const SparsityPattern &A  = l == finest ? fine_sparsity : fine.sparsity;
         const SparsityPattern &P0 = hierarchy.prolongation(l).get_sparsity_pattern();
         DynamicSparsityPattern prolongation_dsp(P0.n_rows(), P0.n_cols());
         for (auto e = P0.begin(); e != P0.end(); ++e)
           prolongation_dsp.add(e->row(), e->column());
-        for (const auto &face : hierarchy.face_relations(l))
-          for (const auto son : face.sons)
-            for (auto e = A.begin(son); e != A.end(son); ++e)
-              if (std::binary_search(face.inside.begin(), face.inside.end(), e->column()))
-                prolongation_dsp.add(e->column(), face.coarse_dof);
+        for (const auto &[i, j] : hierarchy.rerouting_entries(l))
+          prolongation_dsp.add(i, j);
         prolongation_sparsity[l].copy_from(prolongation_dsp);
         face_scale[l].assign(hierarchy.face_relations(l).size(), 1.);
 
-        const SparsityPattern &P = prolongation_sparsity[l];
-        DynamicSparsityPattern product_dsp, galerkin_dsp;
-        product_dsp.compute_mmult_pattern(A, P);
-        product_sparsity[l].copy_from(product_dsp);
-        galerkin_dsp.compute_Tmmult_pattern(P, product_sparsity[l]);
-        galerkin_sparsity[l - 1].copy_from(galerkin_dsp);
-        truncated_prolongation[l].reinit(P);
-        galerkin_product[l].initialize(P);
-        product[l].reinit(product_sparsity[l]);
-        galerkin[l - 1].reinit(galerkin_sparsity[l - 1]);
+        truncated_prolongation[l].reinit(prolongation_sparsity[l]);
+        galerkin_product[l].initialize(
+          prolongation_sparsity[l], A, fine.partitioner, coarse.sparsity, coarse.partitioner);
+        galerkin[l - 1].reinit(coarse.sparsity);
+
+        // the plain cycle reroutes flux: it reads the operator between the
+        // DoFs inside the coarse cells of its contact faces
+        if (parameters.krylov_steps == 0)
+          rerouting_import[l].reinit(rerouting_requests(l), A, fine.partitioner, true);
       }
+  }
+
+
+  template <int dim>
+  std::vector<MatrixEntryImport::Entry>
+  MonotoneMultigrid<dim>::rerouting_requests(const unsigned int l) const
+  {
+    const auto &                          level = hierarchy.level(l);
+    std::vector<MatrixEntryImport::Entry> requests;
+    for (const auto &face : hierarchy.face_relations(l))
+      for (const auto a : face.inside)
+        if (a >= level.n_owned())
+          for (const auto b : face.inside)
+            requests.emplace_back(level.global(a), level.global(b));
+    std::sort(requests.begin(), requests.end());
+    requests.erase(std::unique(requests.begin(), requests.end()), requests.end());
+    return requests;
+  }
+
+
+  template <int dim>
+  void
+  MonotoneMultigrid<dim>::import_rerouting_values(const unsigned int          l,
+                                                  const SparseMatrix<double> &A)
+  {
+    std::vector<double> values;
+    rerouting_import[l].import(A, values);
+    const auto &partitioner = *hierarchy.level(l).partitioner;
+    const auto  requests    = rerouting_requests(l);
+    rerouting_values[l].clear();
+    for (unsigned int k = 0; k < requests.size(); ++k)
+      rerouting_values[l][{partitioner.global_to_local(requests[k].first),
+                           partitioner.global_to_local(requests[k].second)}] = values[k];
+  }
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  MonotoneMultigrid<dim>::n_patch_colors() const
+  {
+    std::vector<unsigned int> n;
+    for (unsigned int l = 1; l <= finest; ++l)
+      n.push_back(hierarchy.n_colors(l));
+    return n;
   }
 
 
@@ -82,9 +122,12 @@ namespace FoslsContact
                                                  const std::vector<bool> &   truncated,
                                                  const bool                  reroute)
   {
-    // (truncation_used[l] is empty until the first product)
-    if (truncated == truncation_used[l] && version[l] == version_used[l] &&
-        reroute == reroute_used[l])
+    // (truncation_used[l] is empty until the first product); every process
+    // takes part in the products, so the decision is taken together
+    const bool unchanged = truncated == truncation_used[l] && version[l] == version_used[l] &&
+                           reroute == reroute_used[l];
+    const MPI_Comm comm = hierarchy.level(l).partitioner->get_mpi_communicator();
+    if (Utilities::MPI::min(unchanged ? 1u : 0u, comm) == 1)
       return;
     const auto timing = section("Solve: Galerkin operators and patch setup");
 
@@ -110,9 +153,15 @@ namespace FoslsContact
           }
       },
       1000);
-    std::vector<bool> removed(P.n(), false);
+
+    // The coarse faces that go, and the rerouted columns, are decided by
+    // the owners of the faces and applied by every process to its rows.
+    std::vector<types::global_dof_index> removed;
+    std::vector<std::array<double, 3>>   entries; // fine row, coarse column (global), value
+    const auto &                         fine   = hierarchy.level(l);
+    const auto &                         coarse = hierarchy.level(l - 1);
     if (reroute)
-      reroute_flux(l, A, role, truncated, removed);
+      reroute_flux(l, A, role, truncated, removed, entries);
     else
       {
         // a coarse face with a truncated son goes
@@ -120,18 +169,46 @@ namespace FoslsContact
         for (const auto &face : hierarchy.face_relations(l))
           for (const auto son : face.sons)
             if (truncated[son])
-              removed[face.coarse_dof] = true;
+              {
+                removed.push_back(coarse.global(face.coarse_dof));
+                break;
+              }
       }
-    if (std::find(removed.begin(), removed.end(), true) != removed.end())
-      for (auto e = Pt.begin(); e != Pt.end(); ++e)
-        if (removed[e->column()])
-          e->value() = 0;
+    std::vector<bool> removed_local(P.n(), false);
+    for (const auto &list : Utilities::MPI::all_gather(comm, removed))
+      for (const auto j : list)
+        if (coarse.partitioner->in_local_range(j) || coarse.partitioner->is_ghost_entry(j))
+          removed_local[coarse.partitioner->global_to_local(j)] = true;
+    for (const auto &list : Utilities::MPI::all_gather(comm, entries))
+      for (const auto &[row, column, value] : list)
+        {
+          const auto i = static_cast<types::global_dof_index>(row);
+          const auto j = static_cast<types::global_dof_index>(column);
+          if ((fine.partitioner->in_local_range(i) || fine.partitioner->is_ghost_entry(i)) &&
+              (coarse.partitioner->in_local_range(j) || coarse.partitioner->is_ghost_entry(j)))
+            Pt.add(fine.partitioner->global_to_local(i),
+                   coarse.partitioner->global_to_local(j),
+                   value);
+        }
+    parallel::apply_to_subranges(
+      types::global_dof_index(0),
+      types::global_dof_index(Pt.m()),
+      [&](const types::global_dof_index begin, const types::global_dof_index end) {
+        for (auto r = begin; r < end; ++r)
+          for (auto e = Pt.begin(r); e != Pt.end(r); ++e)
+            if (removed_local[e->column()])
+              e->value() = 0.;
+      },
+      1000);
 
-    galerkin_product[l].compute(A, Pt, product[l], galerkin[l - 1]);
+    galerkin_product[l].compute(A, Pt, galerkin[l - 1]);
     // the couplings of coarse functions whose fine couplings cancel (a
     // sixth of the product's nonzeros on the square) would lengthen the
-    // patch residuals and couple patches that are not coupled
-    zero_round_off(galerkin[l - 1], ConstrainedQP::round_off_drop);
+    // patch residuals
+    zero_round_off(galerkin[l - 1], coarse.partitioner, ConstrainedQP::round_off_drop);
+    coarse.ghost_rows.import_into(galerkin[l - 1]);
+    if (parameters.krylov_steps == 0 && l - 1 > 0)
+      import_rerouting_values(l - 1, galerkin[l - 1]);
     truncation_used[l] = truncated;
     version_used[l]    = version[l];
     reroute_used[l]    = reroute;
@@ -141,21 +218,33 @@ namespace FoslsContact
                                 galerkin[l - 1],
                                 hierarchy.patches(l - 1),
                                 hierarchy.patch_colors(l - 1),
-                                hierarchy.level(l - 1).role);
+                                hierarchy.n_colors(l - 1),
+                                coarse.role,
+                                coarse.partitioner);
   }
 
 
   template <int dim>
   void
-  MonotoneMultigrid<dim>::reroute_flux(const unsigned int          l,
-                                       const SparseMatrix<double> &A,
-                                       const std::vector<DoFRole> &role,
-                                       const std::vector<bool> &   truncated,
-                                       std::vector<bool> &         removed)
+  MonotoneMultigrid<dim>::reroute_flux(const unsigned int                    l,
+                                       const SparseMatrix<double> &          A,
+                                       const std::vector<DoFRole> &          role,
+                                       const std::vector<bool> &             truncated,
+                                       std::vector<types::global_dof_index> &removed,
+                                       std::vector<std::array<double, 3>> &  entries)
   {
-    SparseMatrix<double> &      Pt    = truncated_prolongation[l];
-    const SparseMatrix<double> &P    = hierarchy.prolongation(l);
-    const auto &                faces = hierarchy.face_relations(l);
+    const SparseMatrix<double> &P      = hierarchy.prolongation(l);
+    const auto &                faces  = hierarchy.face_relations(l);
+    const auto &                fine   = hierarchy.level(l);
+    const auto &                coarse = hierarchy.level(l - 1);
+    // the operator between DoFs inside the face's coarse cell: own rows
+    // here, the others' from the last import
+    auto entry = [&](const types::global_dof_index a, const types::global_dof_index b) {
+      if (a < fine.n_owned())
+        return A.el(a, b);
+      const auto it = rerouting_values[l].find({a, b});
+      return it == rerouting_values[l].end() ? 0. : it->second;
+    };
     for (unsigned int k = 0; k < faces.size(); ++k)
       {
         const auto &face = faces[k];
@@ -174,7 +263,7 @@ namespace FoslsContact
           {
             // no flux can pass: the father goes (a coarse function cut at
             // all its sons would only carry divergence)
-            removed[j] = true;
+            removed.push_back(coarse.global(j));
             continue;
           }
 
@@ -183,27 +272,28 @@ namespace FoslsContact
         for (const auto son : face.sons)
           d[son] = truncated[son] ? -P.el(son, j) : lost / free_sons.size();
         for (const auto son : free_sons)
-          {
-            Pt.add(son, j, d[son]);
-            face_scale[l][k] = std::max(face_scale[l][k], Pt.el(son, j));
-          }
+          face_scale[l][k] = std::max(face_scale[l][k], P.el(son, j) + d[son]);
 
-        // the local correction e on the free, unbounded DoFs at the sons
-        // inside the coarse cell (so that the column, and the Galerkin
+        // the local correction e on the free, unbounded DoFs coupled to the
+        // sons inside the coarse cell (so that the column, and the Galerkin
         // operator, stay on the coupling pattern of the coarse cells; with
         // the DoFs on the cell's other faces too, 38 to 114 entries of the
         // coarse operators fell outside it on the square, with the same
         // iterations)
         std::vector<types::global_dof_index> local;
-        for (const auto son : face.sons)
-          for (auto e = A.begin(son); e != A.end(son); ++e)
-            {
-              const auto i = e->column();
-              if (!truncated[i] && role[i] == DoFRole::free && d.count(i) == 0 &&
-                  std::binary_search(face.inside.begin(), face.inside.end(), i) &&
-                  std::find(local.begin(), local.end(), i) == local.end())
-                local.push_back(i);
-            }
+        for (const auto i : face.inside)
+          if (!truncated[i] && role[i] == DoFRole::free && d.count(i) == 0 &&
+              std::any_of(face.sons.begin(), face.sons.end(), [&](const auto son) {
+                return entry(son, i) != 0.;
+              }))
+            local.push_back(i);
+        // (in the global order of the DoFs, the same on every process)
+        std::sort(local.begin(), local.end(), [&](const auto a, const auto b) {
+          return fine.global(a) < fine.global(b);
+        });
+        for (const auto &[son, value] : d)
+          if (!truncated[son])
+            entries.push_back({{double(fine.global(son)), double(coarse.global(j)), value}});
         if (local.empty())
           continue;
         const unsigned int n = local.size();
@@ -212,16 +302,16 @@ namespace FoslsContact
         for (unsigned int a = 0; a < n; ++a)
           {
             for (unsigned int b = 0; b < n; ++b)
-              A_local(a, b) = A.el(local[a], local[b]);
+              A_local(a, b) = entry(local[a], local[b]);
             for (const auto &[son, value] : d)
-              rhs[a] -= A.el(local[a], son) * value;
+              rhs[a] -= entry(local[a], son) * value;
           }
         // gauss_jordan pivots (FullMatrix::invert uses cofactor formulas for
         // n <= 4, see BoxQP)
         A_local.gauss_jordan();
         A_local.vmult(e, rhs);
         for (unsigned int a = 0; a < n; ++a)
-          Pt.add(local[a], j, e[a]);
+          entries.push_back({{double(fine.global(local[a])), double(coarse.global(j)), e[a]}});
       }
   }
 
@@ -229,12 +319,34 @@ namespace FoslsContact
   template <int dim>
   void
   MonotoneMultigrid<dim>::coarse_solve(const SparseMatrix<double> &A,
-                                       const Vector<double> &      r,
-                                       const Vector<double> &      ub,
+                                       const LevelVector &         r,
+                                       const LevelVector &         ub,
                                        const std::vector<DoFRole> &role,
-                                       Vector<double> &            v)
+                                       LevelVector &               v)
   {
-    const auto timing = section("Solve: coarse solve");
+    const auto     timing      = section("Solve: coarse solve");
+    const auto &   partitioner = *v.get_partitioner();
+    const MPI_Comm comm        = v.get_mpi_communicator();
+    const auto     n_owned     = partitioner.locally_owned_size();
+    // the owned parts of a vector, in the order of the processes: the
+    // whole vector in global order (each owns a contiguous range)
+    const std::vector<int> counts = Utilities::MPI::all_gather(comm, int(n_owned));
+    std::vector<int>       displacements(counts.size(), 0);
+    for (unsigned int p = 1; p < counts.size(); ++p)
+      displacements[p] = displacements[p - 1] + counts[p - 1];
+    auto gather = [&](const LevelVector &x) {
+      std::vector<double> all(partitioner.size());
+      const int           ierr = MPI_Allgatherv(x.begin(),
+                                      n_owned,
+                                      MPI_DOUBLE,
+                                      all.data(),
+                                      counts.data(),
+                                      displacements.data(),
+                                      MPI_DOUBLE,
+                                      comm);
+      AssertThrowMPI(ierr);
+      return all;
+    };
     if (&A != coarse_matrix || version[0] != coarse_version)
       {
         // factorize once per coarse operator: it changes only with the
@@ -243,18 +355,46 @@ namespace FoslsContact
         // coarse solves, 31 ms each when factorized every time)
         coarse_matrix  = &A;
         coarse_version = version[0];
+        std::vector<std::array<double, 3>> mine;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          for (auto e = A.begin(i); e != A.end(i); ++e)
+            mine.push_back({{double(partitioner.local_to_global(i)),
+                             double(partitioner.local_to_global(e->column())),
+                             e->value()}});
+        std::vector<unsigned int> my_roles;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          my_roles.push_back(static_cast<unsigned int>(role[i]));
+        const auto              n = partitioner.size();
+        DynamicSparsityPattern  dsp(n, n);
+        const auto              all_entries = Utilities::MPI::all_gather(comm, mine);
+        for (const auto &part : all_entries)
+          for (const auto &[i, j, value] : part)
+            dsp.add(types::global_dof_index(i), types::global_dof_index(j));
+        coarse_sparsity_global.copy_from(dsp);
+        coarse_matrix_global.reinit(coarse_sparsity_global);
+        for (const auto &part : all_entries)
+          for (const auto &[i, j, value] : part)
+            coarse_matrix_global.set(types::global_dof_index(i), types::global_dof_index(j), value);
+        coarse_role_global.clear();
+        for (const auto &part : Utilities::MPI::all_gather(comm, my_roles))
+          for (const auto x : part)
+            coarse_role_global.push_back(static_cast<DoFRole>(x));
+
         coarse_dofs.clear();
-        for (types::global_dof_index i = 0; i < v.size(); ++i)
-          if (role[i] != DoFRole::fixed && A.diag_element(i) > 0)
+        for (types::global_dof_index i = 0; i < n; ++i)
+          if (coarse_role_global[i] != DoFRole::fixed && coarse_matrix_global.diag_element(i) > 0)
             coarse_dofs.push_back(i);
         if (coarse_dofs.size() <= 2000)
           {
-            const unsigned int n = coarse_dofs.size();
-            FullMatrix<double> M(n, n);
-            for (unsigned int a = 0; a < n; ++a)
-              for (auto e = A.begin(coarse_dofs[a]); e != A.end(coarse_dofs[a]); ++e)
+            const unsigned int m = coarse_dofs.size();
+            FullMatrix<double> M(m, m);
+            for (unsigned int a = 0; a < m; ++a)
+              for (auto e = coarse_matrix_global.begin(coarse_dofs[a]);
+                   e != coarse_matrix_global.end(coarse_dofs[a]);
+                   ++e)
                 {
-                  const auto b = std::lower_bound(coarse_dofs.begin(), coarse_dofs.end(), e->column());
+                  const auto b =
+                    std::lower_bound(coarse_dofs.begin(), coarse_dofs.end(), e->column());
                   if (b != coarse_dofs.end() && *b == e->column())
                     M(a, b - coarse_dofs.begin()) = e->value();
                 }
@@ -265,28 +405,45 @@ namespace FoslsContact
     const unsigned int n    = dofs.size();
     if (n == 0)
       return;
+    const std::vector<double> r_all = gather(r), ub_all = gather(ub);
+    std::vector<double>       v_all = gather(v);
     if (n <= 2000)
       {
-        Vector<double>     g(n), s(n), c;
-        std::vector<bool>  at_bound;
-        Vector<double>     Av(v.size());
-        A.vmult(Av, v);
+        Vector<double>    g(n), s(n), c, v_global(v_all.begin(), v_all.end()),
+          Av(v_all.size());
+        std::vector<bool> at_bound;
+        coarse_matrix_global.vmult(Av, v_global);
         for (unsigned int a = 0; a < n; ++a)
           {
-            g[a] = r[dofs[a]] - Av[dofs[a]];
-            s[a] = role[dofs[a]] == DoFRole::bounded ?
-                     std::max(0., ub[dofs[a]] - v[dofs[a]]) :
+            g[a] = r_all[dofs[a]] - Av[dofs[a]];
+            s[a] = coarse_role_global[dofs[a]] == DoFRole::bounded ?
+                     std::max(0., ub_all[dofs[a]] - v_all[dofs[a]]) :
                      std::numeric_limits<double>::infinity();
           }
         coarse_qp.solve(g, s, c, at_bound);
         for (unsigned int a = 0; a < n; ++a)
-          v[dofs[a]] = at_bound[a] ? ub[dofs[a]] : v[dofs[a]] + c[a];
+          v_all[dofs[a]] = at_bound[a] ? ub_all[dofs[a]] : v_all[dofs[a]] + c[a];
       }
     else
       {
-        // a large coarse mesh: the sparse primal-dual active set method
-        ActiveSetDirect::solve_quietly(A, r, role, ub, v, 100);
+        // a large coarse mesh: the sparse primal-dual active set method, on
+        // this process alone
+        const auto self = serial_partitioner(v_all.size());
+        LevelVector r_self(self), ub_self(self), v_self(self);
+        for (unsigned int i = 0; i < v_all.size(); ++i)
+          {
+            r_self.local_element(i)  = r_all[i];
+            ub_self.local_element(i) = ub_all[i];
+            v_self.local_element(i)  = v_all[i];
+          }
+        ActiveSetDirect::solve_quietly(
+          coarse_matrix_global, r_self, coarse_role_global, ub_self, v_self, 100);
+        for (unsigned int i = 0; i < v_all.size(); ++i)
+          v_all[i] = v_self.local_element(i);
       }
+    // every process has the whole solution: owned and ghost entries
+    for (unsigned int i = 0; i < partitioner.locally_owned_size() + partitioner.n_ghost_indices(); ++i)
+      v.local_element(i) = v_all[partitioner.local_to_global(i)];
   }
 
 
@@ -294,10 +451,10 @@ namespace FoslsContact
   void
   MonotoneMultigrid<dim>::cycle(const unsigned int          l,
                                 const SparseMatrix<double> &A,
-                                const Vector<double> &      r,
-                                const Vector<double> &      ub,
+                                const LevelVector &         r,
+                                const LevelVector &         ub,
                                 const std::vector<DoFRole> &role,
-                                Vector<double> &            v,
+                                LevelVector &               v,
                                 const bool                  linear)
   {
     if (l == 0)
@@ -314,28 +471,35 @@ namespace FoslsContact
     smoother.set_steps(parameters.pre_smoothing);
     {
       const auto timing = section("Solve: smoothing");
-      smoother.smooth(l, v, r);
+      smoother.smooth(l, v, r); // (v's ghost values are valid afterwards)
     }
 
     const double       inf         = std::numeric_limits<double>::infinity();
-    const auto &       coarse_role = hierarchy.level(l - 1).role;
+    const auto &       fine        = hierarchy.level(l);
+    const auto &       coarse      = hierarchy.level(l - 1);
     const unsigned int visits      = (l == 1 ? 1 : parameters.cycle_gamma);
-    const auto         n           = v.size();
+    const unsigned int n_local     = fine.n_local();
+    const unsigned int n_owned     = fine.n_owned();
     // the work vectors of this level (a level is never visited twice at
     // once, and allocating them per visit showed up as page faults)
     Scratch &          work        = scratch[l];
     auto &             defect      = work.defect;
-    if (work.residual.size() != n)
+    if (work.truncated.size() != n_local)
       {
-        const auto n_coarse = hierarchy.level(l - 1).n_dofs;
-        work.truncated.resize(n);
-        work.defect.reinit(n);
-        work.residual.reinit(n);
-        work.w.reinit(n);
-        work.r_coarse.reinit(n_coarse);
-        work.ub_coarse.reinit(n_coarse);
-        work.c.reinit(n_coarse);
-        work.Ac.reinit(n_coarse);
+        work.truncated.resize(n_local);
+        work.defect.reinit(fine.partitioner);
+        work.residual.reinit(fine.partitioner);
+        work.w.reinit(fine.partitioner);
+        work.r_coarse.reinit(coarse.partitioner);
+        work.ub_coarse.reinit(coarse.partitioner);
+        work.c.reinit(coarse.partitioner);
+        work.Ac.reinit(coarse.partitioner);
+      }
+    if (work.diagonal_version != operator_version(l, A))
+      {
+        // (the same on every process: the diagonal has ghost values)
+        work.diagonal         = diagonal(A, fine.partitioner);
+        work.diagonal_version = operator_version(l, A);
       }
     if (work.operator_version != operator_version(l, A) || work.role != role)
       {
@@ -345,14 +509,15 @@ namespace FoslsContact
         // operator (which changes only with that truncation) or the roles
         // (those of the Newton step's linear problem), so a visit only
         // looks at the bounded DoFs.
-        work.fixed_truncated.resize(n);
+        work.fixed_truncated.resize(n_local);
         work.bounded.clear();
-        defect = std::numeric_limits<double>::infinity();
-        for (types::global_dof_index i = 0; i < n; ++i)
+        for (unsigned int i = 0; i < n_local; ++i)
           {
-            work.fixed_truncated[i] = role[i] == DoFRole::fixed || A.diag_element(i) <= 0;
+            work.fixed_truncated[i] =
+              role[i] == DoFRole::fixed || work.diagonal.local_element(i) <= 0;
             if (role[i] == DoFRole::bounded && !work.fixed_truncated[i])
               work.bounded.push_back(i);
+            defect.local_element(i) = inf;
           }
         work.operator_version = operator_version(l, A);
         work.role             = role;
@@ -364,38 +529,45 @@ namespace FoslsContact
     auto &ub_coarse = work.ub_coarse;
     auto &c         = work.c;
     auto &Ac        = work.Ac;
+    const MPI_Comm comm = fine.partitioner->get_mpi_communicator();
 
     for (unsigned int visit = 0; visit < visits; ++visit)
       {
         // Truncation (eq. 34): fixed, active and switched-off DoFs do not
-        // move; their defect obstacle is +inf (eqs. 35-36).
+        // move; their defect obstacle is +inf (eqs. 35-36). On the ghost
+        // DoFs too, from their owners' values: the same decision.
+        update_ghosts(v);
+        update_ghosts(ub);
         truncated = work.fixed_truncated;
         for (const auto i : work.bounded)
           {
-            truncated[i] = v[i] >= ub[i]; // active
-            defect[i]    = truncated[i] ? inf : ub[i] - v[i];
+            const double vi = v.local_element(i), ubi = ub.local_element(i);
+            truncated[i]            = vi >= ubi; // active
+            defect.local_element(i) = truncated[i] ? inf : ubi - vi;
           }
         update_coarse_operator(l, A, role, truncated, !linear);
         const auto &P = truncated_prolongation[l];
 
-        A.vmult(residual, v);
+        vmult(A, residual, v);
         residual.sadd(-1., 1., r);
         galerkin_product[l].Tvmult(r_coarse, residual);
-        CoarseObstacles::project(parameters.projection,
-                                 hierarchy.vertex_relations(l),
-                                 hierarchy.face_relations(l),
-                                 face_scale[l],
-                                 defect,
-                                 ub_coarse);
+        CoarseObstacles::project(
+          parameters.projection, hierarchy.face_relations(l), face_scale[l], defect, ub_coarse);
         c = 0;
-        cycle(l - 1, galerkin[l - 1], r_coarse, ub_coarse, coarse_role, c, linear);
+        cycle(l - 1, galerkin[l - 1], r_coarse, ub_coarse, coarse.role, c, linear);
 
-        P.vmult(w, c);
+        vmult(P, w, c);
         // keep the iterate feasible (a no-op when K_H is inside K_h)
         double alpha = 1.;
         for (const auto i : work.bounded)
-          if (!truncated[i] && w[i] > 0 && v[i] + w[i] > ub[i])
-            alpha = std::min(alpha, std::max(0., (ub[i] - v[i]) / w[i]));
+          if (i < n_owned && !truncated[i])
+            {
+              const double wi = w.local_element(i), vi = v.local_element(i),
+                           ubi = ub.local_element(i);
+              if (wi > 0 && vi + wi > ubi)
+                alpha = std::min(alpha, std::max(0., (ubi - vi) / wi));
+            }
+        alpha = Utilities::MPI::min(alpha, comm);
         if (alpha < 1.)
           ++n_dampings;
 
@@ -403,15 +575,15 @@ namespace FoslsContact
         // w = P~ c: w.residual = c.r_coarse and w.A w = c.A_{l-1} c (the
         // Galerkin product), on the coarse level instead of a product with
         // the fine matrix
-        galerkin[l - 1].vmult(Ac, c);
+        vmult(galerkin[l - 1], Ac, c);
         const double wr = c * r_coarse, wAw = c * Ac;
         const double change = -alpha * wr + 0.5 * alpha * alpha * wAw;
         if (change > 1e-10 * (std::abs(alpha * wr) + 0.5 * alpha * alpha * std::abs(wAw)) + 1e-300)
           ++n_increases;
         v.add(alpha, w);
         for (const auto i : work.bounded)
-          if (v[i] > ub[i])
-            v[i] = ub[i]; // round-off of the damped step only
+          if (i < n_owned && v.local_element(i) > ub.local_element(i))
+            v.local_element(i) = ub.local_element(i); // round-off of the damped step only
       }
 
     smoother.use_linear_roles(l, linear && l == finest);
@@ -428,25 +600,24 @@ namespace FoslsContact
 
   namespace
   {
-    /** A restricted to the inactive set: the rows and columns of the
-     * fixed DoFs are 0. */
+    /**
+     * A restricted to the inactive set: the rows and columns of the fixed
+     * DoFs are 0 (@p fixed: the owned ones).
+     */
     struct TruncatedOperator
     {
       const SparseMatrix<double> &                A;
       const std::vector<types::global_dof_index> &fixed;
+      mutable LevelVector                         tmp;
       void
-      vmult(Vector<double> &dst, const Vector<double> &src) const
+      vmult(LevelVector &dst, const LevelVector &src) const
       {
-        A.vmult(dst, src);
-        // take out the columns of fixed DoFs (in CG they are zero anyway:
-        // the preconditioner never moves them); A is symmetric, so column
-        // i is row i
+        tmp = src;
         for (const auto i : fixed)
-          if (src[i] != 0.)
-            for (auto e = A.begin(i); e != A.end(i); ++e)
-              dst[e->column()] -= e->value() * src[i];
+          tmp.local_element(i) = 0;
+        FoslsContact::vmult(A, dst, tmp);
         for (const auto i : fixed)
-          dst[i] = 0;
+          dst.local_element(i) = 0;
       }
     };
 
@@ -456,7 +627,7 @@ namespace FoslsContact
     {
       Cycle cycle;
       void
-      vmult(Vector<double> &dst, const Vector<double> &src) const
+      vmult(LevelVector &dst, const LevelVector &src) const
       {
         dst = 0;
         cycle(src, dst);
@@ -467,11 +638,13 @@ namespace FoslsContact
 
   template <int dim>
   unsigned int
-  MonotoneMultigrid<dim>::newton_step(const ConstrainedQP &qp, Vector<double> &x)
+  MonotoneMultigrid<dim>::newton_step(const ConstrainedQP &qp, LevelVector &x)
   {
-    unsigned int n_cycles = 0;
-    const auto &A = qp.matrix;
-    const auto  n = x.size();
+    unsigned int   n_cycles = 0;
+    const auto &   A        = qp.matrix;
+    const auto     n_owned  = qp.n_owned();
+    const auto     n_local  = qp.role.size();
+    const MPI_Comm comm     = qp.get_communicator();
 
     smoother.set_obstacles(finest, qp.upper_bounds);
     smoother.set_backward(false);
@@ -485,28 +658,32 @@ namespace FoslsContact
     // holds it: the multiplier mu_i = (b - A x)_i is positive. A DoF that
     // sits at its bound while the gradient pulls it inside (mu_i < 0) is
     // left free, so that the Newton direction can release it.
-    Vector<double> residual(n), d(n), increment(n), rhs(n), Ae(n);
-    A.vmult(residual, x);
+    LevelVector residual = qp.new_vector(), d = qp.new_vector(), increment = qp.new_vector(),
+                rhs = qp.new_vector(), Ae = qp.new_vector();
+    vmult(A, residual, x);
     residual.sadd(-1., 1., qp.rhs);
+    update_ghosts(residual);
+    update_ghosts(x);
     linear_role = qp.role;
-    for (types::global_dof_index i = 0; i < n; ++i)
+    for (unsigned int i = 0; i < n_local; ++i)
       if (qp.role[i] == DoFRole::bounded)
-        linear_role[i] = (x[i] >= qp.upper_bounds[i] && residual[i] >= 0) ?
+        linear_role[i] = (x.local_element(i) >= qp.upper_bounds.local_element(i) &&
+                          residual.local_element(i) >= 0) ?
                            DoFRole::fixed :
                            DoFRole::free;
 
-    Vector<double> infinite(n);
-    infinite = std::numeric_limits<double>::infinity();
-    auto apply_cycle = [&](const Vector<double> &r, Vector<double> &v) {
+    LevelVector infinite = qp.new_vector();
+    infinite             = std::numeric_limits<double>::infinity();
+    auto apply_cycle     = [&](const LevelVector &r, LevelVector &v) {
       cycle(finest, A, r, infinite, linear_role, v, true);
       ++n_cycles;
     };
     CyclePreconditioner<decltype(apply_cycle)> preconditioner{apply_cycle};
     std::vector<types::global_dof_index> fixed;
-    for (types::global_dof_index i = 0; i < n; ++i)
+    for (unsigned int i = 0; i < n_owned; ++i)
       if (linear_role[i] == DoFRole::fixed)
         fixed.push_back(i);
-    TruncatedOperator op{A, fixed};
+    TruncatedOperator op{A, fixed, qp.new_vector()};
 
     // The Newton direction d = increment + (solution of the linear problem
     // on the free DoFs). A free DoF that the direction would push past its
@@ -534,14 +711,14 @@ namespace FoslsContact
         rhs = residual;
         if (round > 0) // the increment is zero until a DoF was moved to its bound
           {
-            A.vmult(Ae, increment);
+            vmult(A, Ae, increment);
             rhs -= Ae;
           }
-        for (types::global_dof_index i = 0; i < n; ++i)
+        for (unsigned int i = 0; i < n_owned; ++i)
           if (linear_role[i] == DoFRole::fixed)
-            rhs[i] = 0;
+            rhs.local_element(i) = 0;
         SolverControl control(parameters.krylov_steps, 1e-3 * rhs.l2_norm(), false, false);
-        SolverCG<Vector<double>> cg(control);
+        SolverCG<LevelVector> cg(control);
         d = 0;
         try
           {
@@ -553,17 +730,20 @@ namespace FoslsContact
           }
         d += increment;
         bool violated = false;
-        for (types::global_dof_index i = 0; round < max_rounds && i < n; ++i)
+        for (unsigned int i = 0; round < max_rounds && i < n_owned; ++i)
           if (qp.role[i] == DoFRole::bounded && linear_role[i] == DoFRole::free &&
-              x[i] + d[i] > qp.upper_bounds[i])
+              x.local_element(i) + d.local_element(i) > qp.upper_bounds.local_element(i))
             {
               linear_role[i] = DoFRole::fixed;
               fixed.push_back(i);
-              increment[i]   = qp.upper_bounds[i] - x[i];
-              violated       = true;
+              increment.local_element(i) =
+                qp.upper_bounds.local_element(i) - x.local_element(i);
+              violated = true;
             }
-        if (!violated)
+        if (Utilities::MPI::max(violated ? 1u : 0u, comm) == 0)
           break;
+        // the owners' decisions to the ghost copies (the smoother's roles)
+        exchange_ghosts(qp.partitioner, linear_role);
       }
 
     // Line search along the projected Newton step: p = P_K(x + alpha d),
@@ -572,8 +752,8 @@ namespace FoslsContact
     // t in (0, 1] is taken: J decreases whenever p - x is a descent
     // direction. Otherwise the feasible part of the step along d is taken,
     // which decreases J by convexity.
-    Vector<double> Ad(n), step(n);
-    A.vmult(Ad, d);
+    LevelVector Ad = qp.new_vector(), step = qp.new_vector();
+    vmult(A, Ad, d);
     const double dAd = d * Ad, dr = d * residual;
     if (!(dAd > 0) || !(dr > 0))
       return n_cycles;
@@ -581,18 +761,21 @@ namespace FoslsContact
     step.add(dr / dAd, d);
     qp.project_to_feasible(step);
     step -= x;
-    Vector<double> As(n);
-    A.vmult(As, step);
+    LevelVector As = qp.new_vector();
+    vmult(A, As, step);
     const double sAs = step * As, sr = step * residual;
     if (sAs > 0 && sr > 0)
       x.add(std::min(1., sr / sAs), step);
     else
       {
         double t = dr / dAd;
-        for (types::global_dof_index i = 0; i < n; ++i)
-          if (qp.role[i] == DoFRole::bounded && d[i] > 0)
-            t = std::min(t, std::max(0., (qp.upper_bounds[i] - x[i]) / d[i]));
-        x.add(t, d);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          if (qp.role[i] == DoFRole::bounded && d.local_element(i) > 0)
+            t = std::min(t,
+                         std::max(0.,
+                                  (qp.upper_bounds.local_element(i) - x.local_element(i)) /
+                                    d.local_element(i)));
+        x.add(Utilities::MPI::min(t, comm), d);
       }
     qp.project_to_feasible(x); // round-off only
 
@@ -610,7 +793,7 @@ namespace FoslsContact
   template <int dim>
   void
   MonotoneMultigrid<dim>::solve(const ConstrainedQP &qp,
-                                Vector<double> &     x,
+                                LevelVector &        x,
                                 Monitor &            monitor)
   {
     AssertThrow(qp.size() == hierarchy.level(finest).n_dofs,
@@ -619,22 +802,28 @@ namespace FoslsContact
                   fine_sparsity->n_nonzero_elements() == qp.matrix.n_nonzero_elements(),
                 ExcMessage("monotone multigrid: the problem's matrix is not on the "
                            "pattern the solver was set up for"));
+    update_ghosts(x);
     qp.project_to_feasible(x);
     monitor.start(x);
     smoother.initialize_level(finest,
                               qp.matrix,
                               hierarchy.patches(finest),
                               hierarchy.patch_colors(finest),
-                              qp.role);
+                              hierarchy.n_colors(finest),
+                              qp.role,
+                              qp.partitioner);
+    if (parameters.krylov_steps == 0 && finest > 0)
+      import_rerouting_values(finest, qp.matrix);
     linear_role_used.clear(); // the linear roles of the finest level are gone
     ++version[finest];
 
-    Vector<double> x_old(x);
+    LevelVector x_old(x);
     for (;;)
       {
         x_old = x;
-        const unsigned int increases_before = n_increases + smoother.energy_increases();
-        const unsigned int dampings_before  = n_dampings;
+        const unsigned int increases_before =
+          n_increases + Utilities::MPI::sum(smoother.energy_increases(), qp.get_communicator());
+        const unsigned int dampings_before = n_dampings;
         if (finest == 0)
           {
             // one level: the exact coarse solve is the whole method
@@ -651,9 +840,9 @@ namespace FoslsContact
             cycle(finest, qp.matrix, qp.rhs, qp.upper_bounds, qp.role, x);
             monitor.note_cycles(1);
           }
-        for (unsigned int k = increases_before;
-             k < n_increases + smoother.energy_increases();
-             ++k)
+        const unsigned int increases_after =
+          n_increases + Utilities::MPI::sum(smoother.energy_increases(), qp.get_communicator());
+        for (unsigned int k = increases_before; k < increases_after; ++k)
           monitor.note_energy_increase();
         for (unsigned int k = dampings_before; k < n_dampings; ++k)
           monitor.note_feasibility_damping();
@@ -661,20 +850,6 @@ namespace FoslsContact
           break;
       }
   }
-
-  template <int dim>
-  std::vector<unsigned int>
-  MonotoneMultigrid<dim>::n_patch_colors() const
-  {
-    std::vector<unsigned int> n;
-    for (unsigned int l = 1; l <= finest; ++l)
-      {
-        const auto &colors = hierarchy.patch_colors(l);
-        n.push_back(colors.empty() ? 0 : *std::max_element(colors.begin(), colors.end()) + 1);
-      }
-    return n;
-  }
-
 
   template class MonotoneMultigrid<2>;
   template class MonotoneMultigrid<3>;

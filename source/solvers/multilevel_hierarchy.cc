@@ -1,4 +1,5 @@
 #include <deal.II/base/geometry_info.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <fosls_contact/solvers/multilevel_hierarchy.h>
@@ -86,20 +87,51 @@ namespace FoslsContact
   template <int dim>
   std::vector<unsigned int>
   MultilevelHierarchy<dim>::level_schedule(
-    const std::vector<std::vector<unsigned int>> &coupled)
+    const std::vector<std::vector<unsigned int>> &           coupled,
+    const std::vector<types::global_dof_index> &             color_dof,
+    const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner)
   {
-    std::vector<unsigned int> color(coupled.size(), 0);
+    // the color of item p travels in the local DoF color_dof[p] (-1: not
+    // known yet); its owner decides it once the colors of all earlier items
+    // coupled with it are known
+    const unsigned int n_owned = partitioner->locally_owned_size();
+    LevelVector        color(partitioner);
+    color = -1.;
+    for (;;)
+      {
+        update_ghosts(color);
+        unsigned int pending = 0;
+        for (unsigned int p = 0; p < coupled.size(); ++p)
+          if (color_dof[p] < n_owned && color.local_element(color_dof[p]) < 0)
+            {
+              double c     = 0;
+              bool   known = true;
+              for (const unsigned int q : coupled[p])
+                if (q < p)
+                  {
+                    const double cq = color.local_element(color_dof[q]);
+                    known &= cq >= 0;
+                    c = std::max(c, cq + 1);
+                  }
+              if (known)
+                color.local_element(color_dof[p]) = c;
+              else
+                ++pending;
+            }
+        if (Utilities::MPI::sum(pending, partitioner->get_mpi_communicator()) == 0)
+          break;
+      }
+    update_ghosts(color);
+    std::vector<unsigned int> result(coupled.size());
     for (unsigned int p = 0; p < coupled.size(); ++p)
-      for (const unsigned int q : coupled[p])
-        if (q < p)
-          color[p] = std::max(color[p], color[q] + 1);
-    return color;
+      result[p] = static_cast<unsigned int>(color.local_element(color_dof[p]));
+    return result;
   }
 
 
   namespace
   {
-    /** The rotation R of a level as a sparse matrix (or its inverse). */
+    /** The rotation R of a level as a local sparse matrix (or its inverse). */
     template <int dim>
     void
     rotation_matrix(const LevelData<dim> &level,
@@ -107,8 +139,9 @@ namespace FoslsContact
                     SparsityPattern &     sparsity,
                     SparseMatrix<double> &R)
     {
-      DynamicSparsityPattern dsp(level.n_dofs, level.n_dofs);
-      for (types::global_dof_index i = 0; i < level.n_dofs; ++i)
+      const unsigned int     n = level.n_local();
+      DynamicSparsityPattern dsp(n, n);
+      for (unsigned int i = 0; i < n; ++i)
         dsp.add(i, i);
       for (const auto &block : level.rotations)
         for (unsigned int a = 0; a < dim; ++a)
@@ -116,7 +149,7 @@ namespace FoslsContact
             dsp.add(block.dofs[a], block.dofs[b]);
       sparsity.copy_from(dsp);
       R.reinit(sparsity);
-      for (types::global_dof_index i = 0; i < level.n_dofs; ++i)
+      for (unsigned int i = 0; i < n; ++i)
         if (level.rotation_of_dof[i] == numbers::invalid_unsigned_int)
           R.set(i, i, 1.);
       for (const auto &block : level.rotations)
@@ -125,6 +158,47 @@ namespace FoslsContact
             R.set(block.dofs[a],
                   block.dofs[b],
                   inverse ? block.inverse(a, b) : block.matrix(a, b));
+    }
+  } // namespace
+
+
+  namespace
+  {
+    /**
+     * The fine DoFs of the children of @p cell (those with DoFs here) that
+     * do not lie on one of its faces other than @p f, sorted. Child c of an
+     * isotropically refined cell touches the parent's face 2d + s iff bit d
+     * of c is s; its vertex v lies on that face iff bit d of v is s too.
+     */
+    template <int dim, typename Iterator>
+    std::vector<types::global_dof_index>
+    inside_dofs(const Iterator &cell, const unsigned int f, const LevelData<dim> &fine)
+    {
+      std::set<types::global_dof_index> inside;
+      auto on_other_face = [&](const unsigned int c, const unsigned int d, const unsigned int s) {
+        return ((c >> d) & 1u) == s && 2 * d + s != f;
+      };
+      for (unsigned int c = 0; c < cell->n_children(); ++c)
+        {
+          const auto child = cell->child(c);
+          if (!Discretization<dim>::is_present(child))
+            continue;
+          for (const unsigned int v : child->vertex_indices())
+            {
+              bool outside = false;
+              for (unsigned int d = 0; d < dim; ++d)
+                outside |= ((v >> d) & 1u) == ((c >> d) & 1u) &&
+                           on_other_face(c, d, (c >> d) & 1u);
+              if (!outside)
+                for (const auto dof : fine.vertex_dofs.at(child->vertex_index(v)))
+                  inside.insert(dof);
+            }
+          for (const unsigned int cf : child->face_indices())
+            if (!on_other_face(c, cf / 2, cf % 2))
+              for (const auto dof : fine.face_dofs.at(child->face(cf)->index()))
+                inside.insert(dof);
+        }
+      return {inside.begin(), inside.end()};
     }
   } // namespace
 
@@ -141,10 +215,13 @@ namespace FoslsContact
     rotated_sparsity.resize(n);
     rotated.resize(n);
     level_patches.resize(n);
-    vertex_rel.resize(n);
+    level_colors.resize(n);
+    level_n_colors.assign(n, 0);
     face_rel.resize(n);
+    rerouting.resize(n);
 
-    // Rotated prolongations R_l^{-1} P R_{l-1}.
+    // Rotated prolongations R_l^{-1} P R_{l-1}, for the local fine DoFs
+    // (their coarse DoFs are local: the parents of the cells here are here).
     for (unsigned int l = 1; l < n; ++l)
       {
         SparsityPattern      sp_c, sp_f, sp_tmp;
@@ -162,28 +239,41 @@ namespace FoslsContact
         R_fine_inverse.mmult(*rotated[l], tmp);
       }
 
-    // Vertex patches, in the order of their VertexKey, and their colors.
+    // Vertex patches in the order of their VertexKey, and their colors. A
+    // process relaxes the patches with a DoF it owns; their vertices are
+    // vertices of its own cells, whose cells are all here.
     const auto &dof_handler = discretization.get_dof_handler();
-    level_colors.resize(n);
     for (unsigned int l = 0; l < n; ++l)
       {
         const auto &data = discretization.level(l);
-        std::map<unsigned int, std::set<types::global_dof_index>> patch;
-        std::map<unsigned int, VertexKey<dim>>                     key;
+        std::set<unsigned int> owned_cell_vertices;
         for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              auto &p = patch[cell->vertex_index(v)];
-              if (p.empty())
-                key[cell->vertex_index(v)] = vertex_key<dim>(cell, v);
-              for (const auto dof : data.vertex_dofs.at(cell->vertex_index(v)))
-                p.insert(dof);
-              for (const unsigned int f : cell->face_indices())
-                for (unsigned int i = 0; i < GeometryInfo<dim>::vertices_per_face; ++i)
-                  if (GeometryInfo<dim>::face_to_cell_vertices(f, i) == v)
-                    for (const auto dof : data.face_dofs.at(cell->face(f)->index()))
-                      p.insert(dof);
-            }
+          if (cell->is_locally_owned_on_level())
+            for (const unsigned int v : cell->vertex_indices())
+              owned_cell_vertices.insert(cell->vertex_index(v));
+
+        std::map<unsigned int, VertexKey<dim>>                     key;
+        std::map<unsigned int, std::set<types::global_dof_index>> patch;
+        for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
+          if (Discretization<dim>::is_present(cell))
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                const unsigned int vertex = cell->vertex_index(v);
+                if (key.count(vertex) == 0)
+                  key[vertex] = vertex_key<dim>(cell, v);
+                if (owned_cell_vertices.count(vertex) == 0)
+                  continue;
+                auto &p = patch[vertex];
+                for (const auto dof : data.vertex_dofs.at(vertex))
+                  p.insert(dof);
+                for (const unsigned int f : cell->face_indices())
+                  for (unsigned int i = 0; i < GeometryInfo<dim>::vertices_per_face; ++i)
+                    if (GeometryInfo<dim>::face_to_cell_vertices(f, i) == v)
+                      for (const auto dof : data.face_dofs.at(cell->face(f)->index()))
+                        p.insert(dof);
+              }
+
+        // every vertex of a cell here is an item of the level scheduling
         std::vector<std::pair<VertexKey<dim>, unsigned int>> order;
         for (const auto &[vertex, k] : key)
           order.emplace_back(k, vertex);
@@ -191,24 +281,50 @@ namespace FoslsContact
           return a.first < b.first;
         });
         std::map<unsigned int, unsigned int> position;
+        std::vector<types::global_dof_index> color_dof;
         for (const auto &[k, vertex] : order)
           {
-            position[vertex] = level_patches[l].size();
-            const auto &dofs = patch[vertex];
-            level_patches[l].emplace_back(dofs.begin(), dofs.end());
+            position[vertex] = color_dof.size();
+            color_dof.push_back(data.vertex_dofs.at(vertex)[0]);
           }
         // patches are coupled if their vertices share a cell
         std::vector<std::vector<unsigned int>> coupled(order.size());
         for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
-          for (const unsigned int v : cell->vertex_indices())
-            for (const unsigned int w : cell->vertex_indices())
-              if (v != w)
-                coupled[position[cell->vertex_index(v)]].push_back(
-                  position[cell->vertex_index(w)]);
-        level_colors[l] = level_schedule(coupled);
+          if (Discretization<dim>::is_present(cell))
+            for (const unsigned int v : cell->vertex_indices())
+              for (const unsigned int w : cell->vertex_indices())
+                if (v != w)
+                  coupled[position[cell->vertex_index(v)]].push_back(
+                    position[cell->vertex_index(w)]);
+        const std::vector<unsigned int> color =
+          level_schedule(coupled, color_dof, data.partitioner);
+
+        unsigned int n_colors = 0;
+        for (const auto &[k, vertex] : order)
+          {
+            const auto it = patch.find(vertex);
+            if (it == patch.end())
+              continue;
+            std::vector<types::global_dof_index> dofs(it->second.begin(), it->second.end());
+            if (std::none_of(dofs.begin(), dofs.end(), [&](const auto dof) {
+                  return dof < data.n_owned();
+                }))
+              continue;
+            // the patch's DoFs in global order, so that every process that
+            // relaxes it computes the same numbers in the same order
+            std::sort(dofs.begin(), dofs.end(), [&](const auto a, const auto b) {
+              return data.global(a) < data.global(b);
+            });
+            level_patches[l].push_back(dofs);
+            level_colors[l].push_back(color[position[vertex]]);
+            n_colors = std::max(n_colors, color[position[vertex]] + 1);
+          }
+        level_n_colors[l] =
+          Utilities::MPI::max(n_colors, discretization.get_communicator());
       }
 
-    // Contact relations between level l-1 (coarse) and l (fine).
+    // Contact relations between level l-1 (coarse) and l (fine), for the
+    // coarse contact faces owned here.
     const auto &scene = discretization.get_scene();
     if (!scene.has_contact())
       return;
@@ -216,97 +332,70 @@ namespace FoslsContact
       {
         const auto &coarse = discretization.level(l - 1);
         const auto &fine   = discretization.level(l);
+        for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l - 1))
+          if (Discretization<dim>::is_present(cell))
+            for (const unsigned int f : cell->face_indices())
+              if (cell->at_boundary(f) && scene.is_contact(cell->face(f)->boundary_id()))
+                {
+                  const auto j = coarse.face_dofs.at(cell->face(f)->index())[0];
+                  for (const auto i : inside_dofs(cell, f, fine))
+                    rerouting[l].emplace_back(i, j);
+                }
         auto fine_normal_dof = [&](const unsigned int vertex) {
           return fine.vertex_dofs.at(vertex)[0];
         };
-        std::map<types::global_dof_index, VertexRelation> vrel;
+        auto coarse_normal_dof = [&](const unsigned int vertex) {
+          const auto dof = coarse.vertex_dofs.at(vertex)[0];
+          return coarse.role[dof] == DoFRole::bounded ? dof : numbers::invalid_dof_index;
+        };
         for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l - 1))
-          for (const unsigned int f : cell->face_indices())
-            {
-              if (!cell->at_boundary(f) ||
-                  !scene.is_contact(cell->face(f)->boundary_id()))
-                continue;
-              const auto face = cell->face(f);
-              FaceRelation frel;
-              frel.coarse_dof = coarse.face_dofs.at(face->index())[0];
-              for (unsigned int c = 0; c < face->n_children(); ++c)
-                frel.sons.push_back(fine.face_dofs.at(face->child(c)->index())[0]);
+          if (cell->is_locally_owned_on_level())
+            for (const unsigned int f : cell->face_indices())
               {
-                // the DoFs of the children, minus those on the other faces
-                std::set<types::global_dof_index> all, other_faces;
-                for (unsigned int ch = 0; ch < cell->n_children(); ++ch)
-                  {
-                    const auto child = cell->child(ch);
-                    for (const unsigned int v : child->vertex_indices())
-                      for (const auto dof : fine.vertex_dofs.at(child->vertex_index(v)))
-                        all.insert(dof);
-                    for (const unsigned int cf : child->face_indices())
-                      for (const auto dof : fine.face_dofs.at(child->face(cf)->index()))
-                        all.insert(dof);
-                  }
-                for (const unsigned int g : cell->face_indices())
-                  if (g != f)
-                    for (unsigned int c = 0; c < cell->face(g)->n_children(); ++c)
-                      {
-                        const auto son = cell->face(g)->child(c);
-                        for (const unsigned int v : son->vertex_indices())
-                          for (const auto dof : fine.vertex_dofs.at(son->vertex_index(v)))
-                            other_faces.insert(dof);
-                        for (const auto dof : fine.face_dofs.at(son->index()))
-                          other_faces.insert(dof);
-                      }
-                std::set_difference(all.begin(), all.end(),
-                                    other_faces.begin(), other_faces.end(),
-                                    std::back_inserter(frel.inside));
-              }
-              face_rel[l].push_back(frel);
+                if (!cell->at_boundary(f) ||
+                    !scene.is_contact(cell->face(f)->boundary_id()))
+                  continue;
+                const auto   face = cell->face(f);
+                FaceRelation frel;
+                frel.coarse_dof = coarse.face_dofs.at(face->index())[0];
+                for (unsigned int c = 0; c < face->n_children(); ++c)
+                  frel.sons.push_back(fine.face_dofs.at(face->child(c)->index())[0]);
+                // (all children of an owned cell are here)
+                frel.inside = inside_dofs(cell, f, fine);
 
-              // coarse contact edges of this face (the face itself in 2D)
-              std::vector<std::array<unsigned int, 3>> edges; // a, b, midpoint
-              unsigned int center = numbers::invalid_unsigned_int;
-              if (dim == 2)
-                edges.push_back({face->vertex_index(0),
-                                 face->vertex_index(1),
-                                 face->child(0)->vertex_index(1)});
-              else
-                {
-                  for (unsigned int e = 0; e < GeometryInfo<dim>::lines_per_face; ++e)
-                    {
-                      const auto line = face->line(e);
-                      edges.push_back({line->vertex_index(0),
-                                       line->vertex_index(1),
-                                       line->child(0)->vertex_index(1)});
-                    }
-                  // the face center is the one vertex all sons share
-                  std::map<unsigned int, unsigned int> count;
-                  for (unsigned int c = 0; c < face->n_children(); ++c)
-                    for (const unsigned int v : face->child(c)->vertex_indices())
-                      ++count[face->child(c)->vertex_index(v)];
-                  for (const auto &[v, k] : count)
-                    if (k == face->n_children())
-                      center = v;
-                }
-              for (const auto &[a, b, m] : edges)
-                for (const auto &[self, other] : {std::make_pair(a, b), std::make_pair(b, a)})
+                // coarse contact edges of this face (the face itself in 2D)
+                std::vector<std::array<unsigned int, 3>> edges; // a, b, midpoint
+                if (dim == 2)
+                  edges.push_back({{face->vertex_index(0),
+                                    face->vertex_index(1),
+                                    face->child(0)->vertex_index(1)}});
+                else
                   {
-                    const auto coarse_dof = coarse.vertex_dofs.at(self)[0];
-                    if (coarse.role[coarse_dof] != DoFRole::bounded)
-                      continue;
-                    auto &r      = vrel[coarse_dof];
-                    r.coarse_dof = coarse_dof;
-                    r.fine_self  = fine_normal_dof(self);
-                    r.edges.push_back({fine_normal_dof(other), fine_normal_dof(m)});
+                    for (unsigned int e = 0; e < GeometryInfo<dim>::lines_per_face; ++e)
+                      {
+                        const auto line = face->line(e);
+                        edges.push_back({{line->vertex_index(0),
+                                          line->vertex_index(1),
+                                          line->child(0)->vertex_index(1)}});
+                      }
+                    // the face center is the one vertex all sons share
+                    std::map<unsigned int, unsigned int> count;
+                    for (unsigned int c = 0; c < face->n_children(); ++c)
+                      for (const unsigned int v : face->child(c)->vertex_indices())
+                        ++count[face->child(c)->vertex_index(v)];
+                    for (const auto &[v, k] : count)
+                      if (k == face->n_children())
+                        frel.fine_center = fine_normal_dof(v);
+                    for (const unsigned int v : face->vertex_indices())
+                      if (coarse_normal_dof(face->vertex_index(v)) != numbers::invalid_dof_index)
+                        frel.coarse_vertices.push_back(coarse_normal_dof(face->vertex_index(v)));
                   }
-              if (center != numbers::invalid_unsigned_int)
-                for (const unsigned int v : face->vertex_indices())
-                  {
-                    const auto coarse_dof = coarse.vertex_dofs.at(face->vertex_index(v))[0];
-                    if (coarse.role[coarse_dof] == DoFRole::bounded)
-                      vrel[coarse_dof].centers.push_back(fine_normal_dof(center));
-                  }
-            }
-        for (auto &[dof, r] : vrel)
-          vertex_rel[l].push_back(r);
+                for (const auto &[a, b, m] : edges)
+                  frel.edges.push_back({{{coarse_normal_dof(a), coarse_normal_dof(b)}},
+                                        {{fine_normal_dof(a), fine_normal_dof(b)}},
+                                        fine_normal_dof(m)});
+                face_rel[l].push_back(frel);
+              }
       }
   }
 

@@ -1,6 +1,7 @@
 #include <fosls_contact/solvers/patch_smoother.h>
 
 #include <deal.II/base/parallel.h>
+#include <deal.II/lac/full_matrix.h>
 
 #include <cmath>
 #include <limits>
@@ -8,7 +9,7 @@
 namespace FoslsContact
 {
   PatchSmoother::PatchSmoother(const unsigned int n_levels)
-    : MGSmoother<Vector<double>>(1)
+    : MGSmoother<LevelVector>(1)
     , levels(n_levels)
   {}
 
@@ -19,12 +20,13 @@ namespace FoslsContact
     const SparseMatrix<double> &                             matrix,
     const std::vector<std::vector<types::global_dof_index>> &patches,
     const std::vector<unsigned int> &                        patch_color,
-    const std::vector<DoFRole> &                             role)
+    const unsigned int                                       n_colors,
+    const std::vector<DoFRole> &                             role,
+    const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner)
   {
     Level &level = levels[l];
     level        = Level();
-    const unsigned int n_colors =
-      patches.empty() ? 0 : *std::max_element(patch_color.begin(), patch_color.end()) + 1;
+    const unsigned int n_owned = partitioner->locally_owned_size();
 
     // Layout (serial): the patches in color order, each with the DoFs that
     // can move (not fixed, not switched off by a zero diagonal), its
@@ -38,6 +40,18 @@ namespace FoslsContact
     level.neighbor_start.push_back(0);
     level.row_start.push_back(0);
     level.color_start.push_back(0);
+    // the nonzeros of a row in the global order of their columns, so that
+    // every process that relaxes a patch sums in the same order
+    auto sorted_row = [&](const types::global_dof_index row) {
+      std::vector<std::pair<types::global_dof_index, double>> entries;
+      for (auto e = matrix.begin(row); e != matrix.end(row); ++e)
+        if (e->value() != 0.)
+          entries.emplace_back(e->column(), e->value());
+      std::sort(entries.begin(), entries.end(), [&](const auto &a, const auto &b) {
+        return partitioner->local_to_global(a.first) < partitioner->local_to_global(b.first);
+      });
+      return entries;
+    };
     std::vector<unsigned int> local(matrix.m(), numbers::invalid_unsigned_int);
     // the patch of each DoF among the patches of the current color
     std::vector<unsigned int> patch_of(matrix.m(), numbers::invalid_unsigned_int);
@@ -65,24 +79,21 @@ namespace FoslsContact
                 }
             for (unsigned int a = 0; a < n; ++a)
               {
-                for (auto e = matrix.begin(level.neighbors[first + a]);
-                     e != matrix.end(level.neighbors[first + a]);
-                     ++e)
-                  if (e->value() != 0.)
-                    {
-                      // two patches of one color must not be coupled: they
-                      // are relaxed at the same time
-                      AssertThrow(patch_of[e->column()] == numbers::invalid_unsigned_int ||
-                                    patch_of[e->column()] == p,
-                                  ExcMessage("PatchSmoother: the matrix couples two "
-                                             "patches of one color"));
-                      if (local[e->column()] == numbers::invalid_unsigned_int)
-                        {
-                          local[e->column()] = level.neighbors.size() - first;
-                          level.neighbors.push_back(e->column());
-                        }
-                      level.columns.push_back(local[e->column()]);
-                    }
+                for (const auto &e : sorted_row(level.neighbors[first + a]))
+                  {
+                    // two patches of one color must not be coupled: they
+                    // are relaxed at the same time
+                    AssertThrow(patch_of[e.first] == numbers::invalid_unsigned_int ||
+                                  patch_of[e.first] == p,
+                                ExcMessage("PatchSmoother: the matrix couples two "
+                                           "patches of one color"));
+                    if (local[e.first] == numbers::invalid_unsigned_int)
+                      {
+                        local[e.first] = level.neighbors.size() - first;
+                        level.neighbors.push_back(e.first);
+                      }
+                    level.columns.push_back(local[e.first]);
+                  }
                 level.row_start.push_back(level.columns.size());
               }
             const auto m = level.neighbors.size() - first;
@@ -92,6 +103,7 @@ namespace FoslsContact
               local[level.neighbors[j]] = numbers::invalid_unsigned_int;
             if (n == 0)
               continue;
+            level.counted.push_back(level.neighbors[first] < n_owned);
             level.box_qp.push_back(any_bounded ? n_qps++ : numbers::invalid_unsigned_int);
             level.start.push_back(level.bounded.size());
             level.neighbor_start.push_back(level.neighbors.size());
@@ -123,13 +135,12 @@ namespace FoslsContact
             for (unsigned int a = 0; a < n; ++a)
               {
                 std::size_t j = level.row_start[level.start[k] + a];
-                for (auto e = matrix.begin(dofs[a]); e != matrix.end(dofs[a]); ++e)
-                  if (e->value() != 0.)
-                    {
-                      if (level.columns[j] < n)
-                        M(a, level.columns[j]) = e->value();
-                      level.values[j++] = e->value();
-                    }
+                for (const auto &e : sorted_row(dofs[a]))
+                  {
+                    if (level.columns[j] < n)
+                      M(a, level.columns[j]) = e.second;
+                    level.values[j++] = e.second;
+                  }
               }
             BoxQP   qp(M);
             double *inverse = level.inverse.data() + level.inverse_start[k];
@@ -173,20 +184,23 @@ namespace FoslsContact
 
 
   void
-  PatchSmoother::set_obstacles(const unsigned int l, const Vector<double> &ub)
+  PatchSmoother::set_obstacles(const unsigned int l, const LevelVector &ub)
   {
     levels[l].obstacles = &ub;
   }
 
 
   void
-  PatchSmoother::relax_patches(const Level &         level,
-                               const unsigned int    begin,
-                               const unsigned int    end,
-                               Vector<double> &      v,
-                               const Vector<double> &r) const
+  PatchSmoother::relax_patches(const Level &      level,
+                               const unsigned int begin,
+                               const unsigned int end,
+                               LevelVector &      v_vector,
+                               const LevelVector &r_vector) const
   {
-    const auto &        ub  = *level.obstacles;
+    // local elements, owned and ghost
+    double *            v   = v_vector.begin();
+    const double *      r   = r_vector.begin();
+    const double *      ub  = level.obstacles->begin();
     const double        inf = std::numeric_limits<double>::infinity();
     std::vector<double> g, s, c, near;
     std::vector<bool>   at_bound;
@@ -237,7 +251,7 @@ namespace FoslsContact
               }
             for (unsigned int a = 0; a < n_moving; ++a)
               v[dofs[patch.moving[a]]] += c[a];
-            if (-0.5 * gc > 1e-10 * scale + 1e-300)
+            if (-0.5 * gc > 1e-10 * scale + 1e-300 && level.counted[k])
               ++increases;
             continue;
           }
@@ -277,7 +291,7 @@ namespace FoslsContact
           }
         // exact minimization on the patch: the change is <= 0 up to
         // round-off relative to its own terms
-        if (change > 1e-10 * scale + 1e-300)
+        if (change > 1e-10 * scale + 1e-300 && level.counted[k])
           ++increases;
       }
     if (increases > 0)
@@ -286,14 +300,17 @@ namespace FoslsContact
 
 
   void
-  PatchSmoother::smooth(const unsigned int    l,
-                        Vector<double> &      v,
-                        const Vector<double> &r) const
+  PatchSmoother::smooth(const unsigned int l,
+                        LevelVector &      v,
+                        const LevelVector &r) const
   {
     const Level &      level    = levels[l];
     const unsigned int n_colors = level.color_start.size() - 1;
     AssertThrow(!level.linear || level.linear_patch.size() == level.qps.size(),
                 ExcMessage("PatchSmoother: linear roles used before set_linear_roles()"));
+    update_ghosts(r);
+    update_ghosts(*level.obstacles);
+    update_ghosts(v);
     for (unsigned int step = 0; step < steps; ++step)
       for (unsigned int cc = 0; cc < n_colors; ++cc)
         {
@@ -307,6 +324,8 @@ namespace FoslsContact
               relax_patches(level, begin, end, v, r);
             },
             64);
+          // the owners' new values to the other processes' ghost copies
+          update_ghosts(v);
         }
   }
 

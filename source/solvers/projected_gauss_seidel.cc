@@ -1,41 +1,57 @@
+#include <fosls_contact/qp/gathered_qp.h>
 #include <fosls_contact/solvers/projected_gauss_seidel.h>
 
 namespace FoslsContact
 {
   void
-  ProjectedGaussSeidel::solve(const ConstrainedQP &qp,
-                              Vector<double> &     x,
+  ProjectedGaussSeidel::solve(const ConstrainedQP &distributed,
+                              LevelVector &        x,
                               Monitor &            monitor)
   {
-    qp.project_to_feasible(x);
+    update_ghosts(x);
+    distributed.project_to_feasible(x);
     monitor.start(x);
-    const auto &   A = qp.matrix;
-    Vector<double> x_old(x);
+    // The sweep is sequential in the global order of the DoFs: it runs on
+    // the first process, on the gathered problem (the baseline, meant for
+    // one process).
+    const GatheredQP gathered(distributed, false);
+    LevelVector      whole = gathered.gather(x), x_old(x);
+    const MPI_Comm   comm  = distributed.get_communicator();
     for (;;)
       {
-        x_old = x;
-        for (types::global_dof_index i = 0; i < x.size(); ++i)
+        x_old                  = x;
+        unsigned int increases = 0;
+        if (gathered.here())
           {
-            if (qp.role[i] == DoFRole::fixed)
-              continue;
-            const double a_ii = A.diag_element(i);
-            if (a_ii <= 0)
-              continue;
-            double r = qp.rhs[i];
-            for (auto e = A.begin(i); e != A.end(i); ++e)
-              r -= e->value() * x[e->column()];
-            double xi = x[i] + r / a_ii;
-            if (qp.role[i] == DoFRole::bounded)
-              xi = std::min(xi, qp.upper_bounds[i]);
-            // the change of J along e_i, -r d + a_ii d^2 / 2, is <= 0 up to
-            // round-off relative to its own terms (evaluating J itself
-            // would compare numbers with far larger cancellation errors)
-            const double d      = xi - x[i];
-            const double change = -r * d + 0.5 * a_ii * d * d;
-            if (change > 1e-10 * (std::abs(r * d) + 0.5 * a_ii * d * d) + 1e-300)
-              monitor.note_energy_increase();
-            x[i] = xi;
+            const auto &qp = gathered.qp();
+            const auto &A  = qp.matrix;
+            for (types::global_dof_index i = 0; i < whole.size(); ++i)
+              {
+                if (qp.role[i] == DoFRole::fixed)
+                  continue;
+                const double a_ii = A.diag_element(i);
+                if (a_ii <= 0)
+                  continue;
+                double r = qp.rhs.local_element(i);
+                for (auto e = A.begin(i); e != A.end(i); ++e)
+                  r -= e->value() * whole.local_element(e->column());
+                double xi = whole.local_element(i) + r / a_ii;
+                if (qp.role[i] == DoFRole::bounded)
+                  xi = std::min(xi, qp.upper_bounds.local_element(i));
+                // the change of J along e_i, -r d + a_ii d^2 / 2, is <= 0 up
+                // to round-off relative to its own terms (evaluating J
+                // itself would compare numbers with far larger cancellation
+                // errors)
+                const double d      = xi - whole.local_element(i);
+                const double change = -r * d + 0.5 * a_ii * d * d;
+                if (change > 1e-10 * (std::abs(r * d) + 0.5 * a_ii * d * d) + 1e-300)
+                  ++increases;
+                whole.local_element(i) = xi;
+              }
           }
+        gathered.scatter(whole, x);
+        for (unsigned int k = 0; k < Utilities::MPI::sum(increases, comm); ++k)
+          monitor.note_energy_increase();
         if (monitor.report(x, x_old))
           break;
       }

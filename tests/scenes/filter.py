@@ -8,7 +8,8 @@ file (numbers rounded to 6 significant digits, never times):
   - from the screen output: the "Converged after N iterations" line, whether
     "no contact boundary" / a definiteness check / a contact force line was
     printed, and whether the printed KKT residuals are below 1e-10;
-  - that every output file exists, the row counts of contact.csv and
+  - that every output file exists (the pvtu record and the vtu pieces it
+    names, one per MPI process), the row counts of contact.csv and
     convergence.csv, and the x range of the active contact vertices;
   - that summary.json has all required keys, and the deterministic fields.
 Numerical noise is cut: the parts of the functional are printed as fractions
@@ -22,7 +23,7 @@ import os
 import re
 import sys
 
-REQUIRED_FILES = ["solution_0000.pvtu", "solution_0000.0.vtu", "contact.csv",
+REQUIRED_FILES = ["solution_0000.pvtu", "contact.csv",
                   "convergence.csv", "summary.json", "used_parameters.prm"]
 REQUIRED_KEYS = ["dofs", "levels", "iterations", "converged", "rate_asymptotic",
                  "functional", "functional_eq", "functional_const",
@@ -69,6 +70,16 @@ def main():
     for name in REQUIRED_FILES:
         print("%s: %s" % (name, "present" if os.path.isfile(
             os.path.join(directory, name)) else "MISSING"))
+    # the pieces the pvtu record names (one per MPI process)
+    try:
+        with open(os.path.join(directory, "solution_0000.pvtu")) as f:
+            pieces = re.findall(r'Source="([^"]+)"', f.read())
+    except OSError:
+        pieces = []
+    print("vtu pieces named by the pvtu: %s, all present: %s"
+          % ("yes" if pieces else "none",
+             "yes" if pieces and all(os.path.isfile(os.path.join(directory, p))
+                                     for p in pieces) else "no"))
     leftovers = [n for n in os.listdir(directory) if n.startswith(".staging")]
     print("staging directory left behind: %s" % ("yes" if leftovers else "no"))
 

@@ -142,15 +142,19 @@ class Runner:
         self.exe, self.source = argv[1], argv[2]
         self.count = 0
 
-    def run(self, prm, settings=(), name=None):
+    def run(self, prm, settings=(), name=None, processes=1):
         """Run @p prm (relative to the source directory) with the
-        "Section/Name=value" strings @p settings; the output goes to
-        ./run_NN_<name>, without vtu files."""
+        "Section/Name=value" strings @p settings, on @p processes MPI
+        processes (mpirun from $MPIRUN, more processes than cores allowed);
+        the output goes to ./run_NN_<name>, without vtu files."""
         self.count += 1
         directory = "run_%02d" % self.count + ("_" + name if name else "")
         command = [self.exe, os.path.join(self.source, prm),
                    "--set", "Output/Directory=" + directory,
                    "--set", "Output/Write vtu=false"]
+        if processes > 1:
+            command = [os.environ.get("MPIRUN", "mpirun"), "--oversubscribe",
+                       "-np", str(processes)] + command
         for s in settings:
             command += ["--set", s]
         with open(directory + ".cmd", "w") as f:

@@ -11,6 +11,9 @@
 //    mean normal component), 0 for tangential contact stresses;
 // with the data of square.prm and with non-constant data (linear Dirichlet
 // values, traction and gap), and for a roller (Dirichlet components = 1).
+// Runs on one MPI process, which owns every DoF (local indices of LevelData
+// = global ones): the counts are those of the whole mesh.
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
@@ -30,7 +33,7 @@ test(const std::string &                                     name,
   all.emplace_back("Geometry/Levels", "3");
   const auto              parameters = make_parameters(scene_file("square.prm"), all);
   const Scene<2>          scene(parameters);
-  const Discretization<2> discretization(scene, 3);
+  const Discretization<2> discretization(scene, 3, MPI_COMM_WORLD);
   const auto &            fe = discretization.get_fe();
 
   const QGauss<1> face_quadrature(3);
@@ -65,20 +68,21 @@ test(const std::string &                                     name,
             "level " + std::to_string(l + 1) + ": role counts");
 
       // upper bounds and fixed values, DoF by DoF
-      std::vector<bool> seen_bound(data.n_dofs, false), seen_fixed(data.n_dofs, false);
+      // (LevelData: roles, bounds, fixed values and DoF maps in local indices)
+      std::vector<bool> seen_bound(data.n_local(), false), seen_fixed(data.n_local(), false);
       double            bound_error = 0, dirichlet_error = 0, traction_error = 0,
              tangential_error = 0;
       for (const auto &cv : data.contact_vertices)
         {
           bound_error = std::max(bound_error,
-                                 std::abs(data.upper_bounds[cv.normal_dof] -
+                                 std::abs(data.upper_bounds.local_element(cv.normal_dof) -
                                           scene.gap().value(cv.point)));
           seen_bound[cv.normal_dof] = true;
         }
       for (const auto &cf : data.contact_faces)
         {
           bound_error =
-            std::max(bound_error, std::abs(data.upper_bounds[cf.normal_dof]));
+            std::max(bound_error, std::abs(data.upper_bounds.local_element(cf.normal_dof)));
           seen_bound[cf.normal_dof] = true;
         }
       for (const auto &cell :
@@ -99,7 +103,8 @@ test(const std::string &                                     name,
                   for (unsigned int k = (roller ? 1 : 0); k < 2; ++k)
                     {
                       dirichlet_error = std::max(
-                        dirichlet_error, std::abs(data.fixed_values[dofs[k]] - values[k]));
+                        dirichlet_error,
+                        std::abs(data.fixed_values.local_element(dofs[k]) - values[k]));
                       seen_fixed[dofs[k]] = true;
                     }
                 }
@@ -109,8 +114,9 @@ test(const std::string &                                     name,
                 fe_face.reinit(cell, f);
                 for (unsigned int m = 0; m < (scene.is_neumann(id) ? 2 : 1); ++m)
                   {
+                    // (the cell's DoF indices are global ones)
                     const unsigned int local =
-                      std::find(cell_dofs.begin(), cell_dofs.end(), face_rt[m]) -
+                      std::find(cell_dofs.begin(), cell_dofs.end(), data.global(face_rt[m])) -
                       cell_dofs.begin();
                     const FEValuesExtractors::Vector row(2 + 2 * m);
                     double mean_phi_n = 0, mean_t = 0, area = 0;
@@ -124,7 +130,8 @@ test(const std::string &                                     name,
                       }
                     traction_error =
                       std::max(traction_error,
-                               std::abs(data.fixed_values[face_rt[m]] * mean_phi_n / area -
+                               std::abs(data.fixed_values.local_element(face_rt[m]) *
+                                          mean_phi_n / area -
                                         mean_t / area));
                     seen_fixed[face_rt[m]] = true;
                   }
@@ -132,16 +139,18 @@ test(const std::string &                                     name,
             if (scene.is_contact(id))
               {
                 tangential_error =
-                  std::max(tangential_error, std::abs(data.fixed_values[face_rt[1]]));
+                  std::max(tangential_error,
+                           std::abs(data.fixed_values.local_element(face_rt[1])));
                 seen_fixed[face_rt[1]] = true;
               }
           }
       bool bounds_ok = true, fixed_ok = true;
-      for (types::global_dof_index i = 0; i < data.n_dofs; ++i)
+      for (unsigned int i = 0; i < data.n_local(); ++i)
         {
           bounds_ok &= seen_bound[i] == (data.role[i] == DoFRole::bounded);
           if (!seen_bound[i])
-            bounds_ok &= std::isinf(data.upper_bounds[i]) && data.upper_bounds[i] > 0;
+            bounds_ok &= std::isinf(data.upper_bounds.local_element(i)) &&
+                         data.upper_bounds.local_element(i) > 0;
           fixed_ok &= seen_fixed[i] == (data.role[i] == DoFRole::fixed);
         }
       check(bounds_ok && bound_error < 1e-15,
@@ -160,8 +169,9 @@ test(const std::string &                                     name,
 
 
 int
-main()
+main(int argc, char *argv[])
 {
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
   test("square.prm", {}, false);
   test("square.prm with linear data",
        {{"Data/Dirichlet values", "0.002*x; -0.01 + 0.003*x"},

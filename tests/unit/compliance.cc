@@ -8,6 +8,8 @@
 //  - lambda = inf is deviatoric: A sigma = dev(sigma) / (2 mu), tr(A sigma) = 0
 //    and A(p I) = 0 for a pressure p;
 //  - A is linear and symmetric: A(sigma) : tau = sigma : A(tau).
+#include <deal.II/base/mpi.h>
+
 #include <fosls_contact/assembly/fosls_assembler.h>
 
 #include "tests.h"
@@ -130,8 +132,9 @@ test()
 }
 
 int
-main()
+main(int argc, char *argv[])
 {
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
   test<2>();
   test<3>();
   return exit_code();

@@ -11,7 +11,8 @@
 // 2. GalerkinProduct::compute overwrites: P~^T A P~ for a truncated P~,
 //    computed twice with different truncations, equals deal.II's product
 //    (into zeroed matrices) to round-off, with 1 and with 2 threads (and
-//    the same bits).
+//    the same bits). The result lies on the pattern given to initialize()
+//    (here that of deal.II's compute_Tmmult_pattern, which holds it).
 //    zero_round_off(drop) sets exactly the entries below drop relative to the
 //    diagonal to 0.
 // 3. MultilevelHierarchy::level_schedule keeps the order of every coupled
@@ -21,6 +22,10 @@
 //    1D chain of overlapping patches); PatchSmoother::initialize_level
 //    refuses colors under which the matrix couples two patches of one
 //    color, also where the coupling is a nonzero on one side only.
+// The 1D problems are not tied to a mesh: their vectors (LevelVector) and
+// the level scheduling live on serial_partitioner(), all indices owned by
+// the one process.
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
@@ -76,14 +81,23 @@ namespace
         }
   }
 
+
+  /** The (owned) entries of @p v as a serial vector. */
+  Vector<double>
+  to_vector(const LevelVector &v)
+  {
+    return Vector<double>(v.begin(), v.end());
+  }
 } // namespace
 
 
 int
-main()
+main(int argc, char *argv[])
 {
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
   // large enough for several parallel subranges of every loop
   const unsigned int   n = 20001;
+  const unsigned int   n_coarse = (n + 1) / 2; // the m of make_problem
   SparsityPattern      A_pattern, P_pattern, product_pattern, galerkin_pattern;
   SparseMatrix<double> A, P;
   make_problem(n, A_pattern, A, P_pattern, P);
@@ -107,9 +121,9 @@ main()
 
   // 2. GalerkinProduct overwrites and is exact
   GalerkinProduct galerkin_product;
-  galerkin_product.initialize(P_pattern);
-  SparseMatrix<double> Pt(P_pattern), product(product_pattern),
-    galerkin(galerkin_pattern);
+  galerkin_product.initialize(
+    P_pattern, A_pattern, serial_partitioner(n), galerkin_pattern, serial_partitioner(n_coarse));
+  SparseMatrix<double> Pt(P_pattern), galerkin(galerkin_pattern);
   std::vector<double> results;
   for (const unsigned int threads : {1u, 2u})
     {
@@ -120,7 +134,7 @@ main()
           for (unsigned int i = 0; i < n; i += truncate_every)
             for (auto e = Pt.begin(i); e != Pt.end(i); ++e)
               e->value() = 0.;
-          galerkin_product.compute(A, Pt, product, galerkin);
+          galerkin_product.compute(A, Pt, galerkin);
           // the reference: deal.II's products into zeroed matrices
           SparseMatrix<double> product_ref(product_pattern), galerkin_ref(galerkin_pattern);
           A.mmult(product_ref, Pt, Vector<double>(), false);
@@ -146,9 +160,9 @@ main()
   {
     Pt.copy_from(P);
     SparseMatrix<double> reference(galerkin_pattern);
-    galerkin_product.compute(A, Pt, product, reference);
-    galerkin_product.compute(A, Pt, product, galerkin);
-    zero_round_off(galerkin, 0.05);
+    galerkin_product.compute(A, Pt, reference);
+    galerkin_product.compute(A, Pt, galerkin);
+    zero_round_off(galerkin, serial_partitioner(n_coarse), 0.05);
     unsigned int n_dropped = 0, n_wrong = 0;
     for (unsigned int i = 0; i < galerkin.m(); ++i)
       for (auto e = galerkin.begin(i); e != galerkin.end(i); ++e)
@@ -192,7 +206,13 @@ main()
     for (unsigned int b = 0; b < patches.size(); ++b)
       if (a != b && a + 4 >= b && b + 4 >= a)
         coupled[position[a]].push_back(position[b]);
-  const auto color = MultilevelHierarchy<2>::level_schedule(coupled);
+  // (one process: patch p carries its color in DoF p of its own partitioner)
+  std::vector<types::global_dof_index> color_dof(ordered.size());
+  for (unsigned int p = 0; p < ordered.size(); ++p)
+    color_dof[p] = p;
+  const auto color =
+    MultilevelHierarchy<2>::level_schedule(coupled, color_dof, serial_partitioner(ordered.size()));
+  const unsigned int n_colors = *std::max_element(color.begin(), color.end()) + 1;
   bool order_kept = true;
   for (unsigned int a = 0; a < patches.size(); ++a)
     for (unsigned int b = a + 1; b < std::min<unsigned int>(patches.size(), a + 5); ++b)
@@ -201,8 +221,7 @@ main()
         order_kept &= (p < q) == (color[p] < color[q]) && color[p] != color[q];
       }
   check(order_kept, "level scheduling: every coupled pair keeps its order");
-  std::cout << "colors of " << ordered.size() << " patches: "
-            << *std::max_element(color.begin(), color.end()) + 1 << std::endl;
+  std::cout << "colors of " << ordered.size() << " patches: " << n_colors << std::endl;
 
   // two patches of one color that the matrix couples are refused, also by
   // a nonzero on one side only (an entry dropped on one side): patch {0}
@@ -222,7 +241,8 @@ main()
       bool refused = false;
       try
         {
-          smoother.initialize_level(0, B, two, {0, 0}, {DoFRole::free, DoFRole::free});
+          smoother.initialize_level(
+            0, B, two, {0, 0}, 1, {DoFRole::free, DoFRole::free}, serial_partitioner(2));
         }
       catch (const ExceptionBase &)
         {
@@ -230,15 +250,17 @@ main()
         }
       check(refused, "coupled patches in one color are refused (patch order " +
                        std::to_string(first) + ", 1)");
-      smoother.initialize_level(0, B, two, {0, 1}, {DoFRole::free, DoFRole::free});
+      smoother.initialize_level(
+        0, B, two, {0, 1}, 2, {DoFRole::free, DoFRole::free}, serial_partitioner(2));
       check(smoother.n_colors(0) == 2, "and accepted in two colors");
     }
 
   // the colored sweep against a sequential one, forward and backward
+  const auto           partitioner = serial_partitioner(n);
   std::vector<DoFRole> role(n, DoFRole::free);
-  Vector<double>       r(n), ub(n);
+  LevelVector          r = make_vector(partitioner), ub = make_vector(partitioner);
   for (unsigned int i = 0; i < n; ++i)
-    r[i] = std::sin(1. + i);
+    r.local_element(i) = std::sin(1. + i);
   ub = 1e300;
   for (const bool backward : {false, true})
     {
@@ -247,16 +269,16 @@ main()
         {
           MultithreadInfo::set_thread_limit(threads);
           PatchSmoother smoother(1);
-          smoother.initialize_level(0, A, ordered, color, role);
+          smoother.initialize_level(0, A, ordered, color, n_colors, role, partitioner);
           smoother.set_obstacles(0, ub);
           smoother.set_backward(backward);
           smoother.set_steps(2);
-          Vector<double> v(n);
+          LevelVector v = make_vector(partitioner);
           smoother.smooth(0, v, r);
           if (threads == 1)
-            colored = v;
+            colored = to_vector(v);
           else
-            check(v == colored,
+            check(to_vector(v) == colored,
                   std::string(backward ? "backward" : "forward") +
                     ": the same bits with 1 and 2 threads");
         }
@@ -270,7 +292,7 @@ main()
             Vector<double>     g(m), c(m);
             for (unsigned int a = 0; a < m; ++a)
               {
-                g[a] = r[patch[a]];
+                g[a] = r.local_element(patch[a]);
                 for (auto e = A.begin(patch[a]); e != A.end(patch[a]); ++e)
                   g[a] -= e->value() * sequential[e->column()];
                 for (unsigned int b = 0; b < m; ++b)

@@ -16,7 +16,11 @@
 //  - every contact vertex block is H(n_o) with the bound u.n_o <= g;
 //  - roles and bounds: the normal face DoF is bounded by 0, the tangential
 //    face DoFs are fixed at 0, the normal vertex DoF is bounded by the gap;
-//  - rotate_to_cartesian o rotate_to_normal_tangential = identity.
+//  - rotate_to_cartesian o rotate_to_normal_tangential = identity (on
+//    LevelVectors).
+// Runs on one MPI process, which owns every DoF (local indices of LevelData
+// = global ones).
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
@@ -78,7 +82,7 @@ test_tilted_scene(const std::string &                              file,
   overrides.emplace_back("Data/Gap", "0.001*x");
   const auto parameters = make_parameters(scene_file(file), overrides);
   const Scene<dim>          scene(parameters);
-  const Discretization<dim> discretization(scene, n_levels);
+  const Discretization<dim> discretization(scene, n_levels, MPI_COMM_WORLD);
   const auto &              fe = discretization.get_fe();
 
   Tensor<1, dim> n_o;
@@ -154,7 +158,10 @@ test_tilted_scene(const std::string &                              file,
                 area += fe_face.JxW(q);
               for (unsigned int m = 0; m < dim; ++m)
                 {
-                  local[m] = std::find(cell_dofs.begin(), cell_dofs.end(), face_rt[m]) -
+                  // (the cell's DoF indices are global, face_rt local ones)
+                  local[m] = std::find(cell_dofs.begin(),
+                                       cell_dofs.end(),
+                                       data.global(face_rt[m])) -
                              cell_dofs.begin();
                   const FEValuesExtractors::Vector row(dim + m * dim);
                   c[m] = 0;
@@ -196,9 +203,9 @@ test_tilted_scene(const std::string &                              file,
                   }
 
               // rotated: (t.n_o, t.(H e_2), ...)
-              Vector<double> x(data.n_dofs);
+              LevelVector x = make_vector(data.partitioner);
               for (unsigned int m = 0; m < dim; ++m)
-                x[face_rt[m]] = local_values[local[m]];
+                x.local_element(face_rt[m]) = local_values[local[m]];
               discretization.rotate_to_normal_tangential(l, x);
               for (unsigned int k = 0; k < dim; ++k)
                 {
@@ -206,15 +213,16 @@ test_tilted_scene(const std::string &                              file,
                   for (unsigned int d = 0; d < dim; ++d)
                     expected_k += H(d, k) * t[d];
                   max_traction_error =
-                    std::max(max_traction_error, std::abs(x[face_rt[k]] - expected_k));
+                    std::max(max_traction_error,
+                             std::abs(x.local_element(face_rt[k]) - expected_k));
                 }
 
               // roles and bounds
               roles_ok &= data.role[face_rt[0]] == DoFRole::bounded &&
-                          data.upper_bounds[face_rt[0]] == 0.;
+                          data.upper_bounds.local_element(face_rt[0]) == 0.;
               for (unsigned int m = 1; m < dim; ++m)
                 roles_ok &= data.role[face_rt[m]] == DoFRole::fixed &&
-                            data.fixed_values[face_rt[m]] == 0.;
+                            data.fixed_values.local_element(face_rt[m]) == 0.;
             }
       std::cout << "level " << l + 1 << ": " << negative_c << " of " << faces_seen
                 << " contact faces with c < 0" << std::endl;
@@ -240,7 +248,7 @@ test_tilted_scene(const std::string &                              file,
             std::max(max_vertex_error, matrix_difference<dim>(block.matrix, H));
           max_vertex_error = std::max(max_vertex_error, (cv.normal - n_o).norm());
           vertex_roles_ok &= data.role[cv.normal_dof] == DoFRole::bounded &&
-                             std::abs(data.upper_bounds[cv.normal_dof] -
+                             std::abs(data.upper_bounds.local_element(cv.normal_dof) -
                                       0.001 * cv.point[0]) < 1e-15;
           for (unsigned int k = 1; k < dim; ++k)
             vertex_roles_ok &= data.role[block.dofs[k]] == DoFRole::free;
@@ -248,11 +256,12 @@ test_tilted_scene(const std::string &                              file,
           Tensor<1, dim> u;
           for (unsigned int k = 0; k < dim; ++k)
             u[k] = 0.01 * (k + 1);
-          Vector<double> x(data.n_dofs);
+          LevelVector x = make_vector(data.partitioner);
           for (unsigned int k = 0; k < dim; ++k)
-            x[block.dofs[k]] = u[k];
+            x.local_element(block.dofs[k]) = u[k];
           discretization.rotate_to_normal_tangential(l, x);
-          max_vertex_error = std::max(max_vertex_error, std::abs(x[cv.normal_dof] - u * n_o));
+          max_vertex_error =
+            std::max(max_vertex_error, std::abs(x.local_element(cv.normal_dof) - u * n_o));
         }
       check(max_vertex_error < 1e-15,
             "level " + std::to_string(l + 1) +
@@ -262,13 +271,13 @@ test_tilted_scene(const std::string &                              file,
               ": vertices: normal DoF bounded by the gap, tangential DoFs free");
 
       // round trip
-      Random         random(l + 1);
-      Vector<double> x(data.n_dofs), y(data.n_dofs);
+      Random      random(l + 1);
+      LevelVector x = make_vector(data.partitioner), y = make_vector(data.partitioner);
       for (auto &v : x)
         v = random();
       y = x;
       discretization.rotate_to_normal_tangential(l, y);
-      const bool changed = (Vector<double>(y) -= x).linfty_norm() > 1e-3;
+      const bool changed = (LevelVector(y) -= x).linfty_norm() > 1e-3;
       discretization.rotate_to_cartesian(l, y);
       y -= x;
       check(changed && y.linfty_norm() < 1e-13 * x.linfty_norm() * (1 << (l * (dim - 1))),
@@ -279,8 +288,9 @@ test_tilted_scene(const std::string &                              file,
 
 
 int
-main()
+main(int argc, char *argv[])
 {
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
   test_householder<2>(Point<2>(0.3, -1.));
   test_householder<2>(Point<2>(0., -1.));
   test_householder<2>(Point<2>(1., 0.));

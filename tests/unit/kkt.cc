@@ -14,6 +14,8 @@
 //  - the assembled matrix is on the pattern of its entries above
 //    round-off, and symmetric.
 // Functional values are printed scaled by 1e7 (they are ~1e-7).
+// Runs on one MPI process, which owns every DoF (the LevelVectors' local
+// indices = global ones).
 #include <deal.II/base/mpi.h>
 
 #include <fosls_contact/assembly/fosls_assembler.h>
@@ -40,7 +42,7 @@ struct Problem
                                   {"Solver/Max iterations",
                                    std::to_string(max_iterations)}}))
     , scene(parameters)
-    , discretization(scene, levels)
+    , discretization(scene, levels, MPI_COMM_WORLD)
   {
     const unsigned int L = discretization.finest_level();
     qp.reinit(discretization.level(L));
@@ -89,13 +91,13 @@ check_compressed_matrix(const unsigned int levels)
 }
 
 
-Vector<double>
+LevelVector
 solve_active_set(const unsigned int levels)
 {
   std::cout << "--- active set, " << levels << " levels" << std::endl;
   Problem                  p(levels, "active set");
   const ConstrainedQP &    qp = p.qp;
-  Vector<double>           x(qp.size());
+  LevelVector              x  = qp.new_vector();
   const ConditionalOStream quiet(std::cout, false);
   Monitor                  monitor(qp, p.parameters.solver, quiet, "active set");
   ActiveSetDirect().solve(qp, x, monitor);
@@ -110,35 +112,35 @@ solve_active_set(const unsigned int levels)
 
   // mu = b - A x, relative to the size of the terms of the rows (b = 0
   // here: the data enter through fixed values)
-  Vector<double> mu(qp.size());
-  qp.matrix.vmult(mu, x);
+  LevelVector mu = qp.new_vector();
+  vmult(qp.matrix, mu, x);
   mu.sadd(-1., 1., qp.rhs);
   double scale = qp.rhs.linfty_norm();
-  for (types::global_dof_index i = 0; i < qp.size(); ++i)
+  for (unsigned int i = 0; i < qp.n_owned(); ++i)
     if (qp.role[i] != DoFRole::fixed)
       {
         double row = 0;
         for (auto e = qp.matrix.begin(i); e != qp.matrix.end(i); ++e)
-          row += std::abs(e->value() * x[e->column()]);
+          row += std::abs(e->value() * x.local_element(e->column()));
         scale = std::max(scale, row);
       }
   bool         sign_ok = true, complementarity_ok = true, free_ok = true;
   unsigned int n_vertices_in_contact = 0, n_positive = 0;
-  for (types::global_dof_index i = 0; i < qp.size(); ++i)
+  for (unsigned int i = 0; i < qp.n_owned(); ++i)
     if (qp.role[i] == DoFRole::bounded)
       {
-        const bool at_bound = x[i] == qp.upper_bounds[i];
-        sign_ok &= mu[i] >= -1e-12 * scale;
-        n_positive += (mu[i] > 1e-8 * scale);
+        const bool at_bound = x.local_element(i) == qp.upper_bounds.local_element(i);
+        sign_ok &= mu.local_element(i) >= -1e-12 * scale;
+        n_positive += (mu.local_element(i) > 1e-8 * scale);
         if (!at_bound)
-          complementarity_ok &= std::abs(mu[i]) <= 1e-12 * scale;
+          complementarity_ok &= std::abs(mu.local_element(i)) <= 1e-12 * scale;
       }
     else if (qp.role[i] == DoFRole::free)
-      free_ok &= std::abs(mu[i]) <= 1e-12 * scale;
+      free_ok &= std::abs(mu.local_element(i)) <= 1e-12 * scale;
   std::cout << "bounded DoFs with a positive multiplier: " << n_positive << std::endl;
   for (const auto &cv :
        p.discretization.level(p.discretization.finest_level()).contact_vertices)
-    n_vertices_in_contact += (x[cv.normal_dof] == cv.gap);
+    n_vertices_in_contact += (x.local_element(cv.normal_dof) == cv.gap);
   check(sign_ok, "multipliers b - A x >= 0 on bounded DoFs");
   check(complementarity_ok, "multipliers vanish where the bound is not attained");
   check(free_ok, "A x = b on free DoFs");
@@ -159,20 +161,24 @@ solve_active_set(const unsigned int levels)
  * @p excess_bound.
  */
 void
-solve_gauss_seidel(const unsigned int    levels,
-                   const Vector<double> &reference,
-                   const unsigned int    batch,
-                   const unsigned int    n_batches,
-                   const double          distance_bound,
-                   const double          excess_bound)
+solve_gauss_seidel(const unsigned int levels,
+                   const LevelVector &active_set_solution,
+                   const unsigned int batch,
+                   const unsigned int n_batches,
+                   const double       distance_bound,
+                   const double       excess_bound)
 {
   std::cout << "--- projected Gauss-Seidel, " << levels << " levels, "
             << n_batches << " x " << batch << " sweeps" << std::endl;
   Problem p(levels, "projected gauss seidel", batch);
   auto    solver_parameters = p.parameters.solver;
   solver_parameters.tolerance = 1e-30;
-  const ConstrainedQP &    qp = p.qp;
-  Vector<double>           x(qp.size());
+  const ConstrainedQP &qp = p.qp;
+  // x* (computed on another Discretization of the same mesh: the same DoF
+  // numbering) on the partitioner of this problem
+  LevelVector reference = qp.new_vector();
+  reference.copy_locally_owned_data_from(active_set_solution);
+  LevelVector              x = qp.new_vector();
   const ConditionalOStream quiet(std::cout, false);
   const double             J_ref    = qp.value(reference);
   double                   distance = std::numeric_limits<double>::max(),
@@ -191,7 +197,7 @@ solve_gauss_seidel(const unsigned int    levels,
                     history[k - 1].functional.total +
                       1e-14 * std::abs(history[k - 1].functional.total);
 
-      Vector<double> difference(x);
+      LevelVector difference(x);
       difference -= reference;
       const double new_distance =
         qp.energy_norm(difference) / qp.energy_norm(reference);
@@ -202,10 +208,11 @@ solve_gauss_seidel(const unsigned int    levels,
       excess   = new_excess;
     }
   bool same_contact_set = true;
-  for (types::global_dof_index i = 0; i < qp.size(); ++i)
+  for (unsigned int i = 0; i < qp.n_owned(); ++i)
     if (qp.role[i] == DoFRole::bounded)
-      same_contact_set &= (x[i] == qp.upper_bounds[i]) ==
-                          (reference[i] == qp.upper_bounds[i]);
+      same_contact_set &=
+        (x.local_element(i) == qp.upper_bounds.local_element(i)) ==
+        (reference.local_element(i) == qp.upper_bounds.local_element(i));
   std::cout << "sweeps = " << iterations << ", active = " << qp.n_active(x)
             << std::endl;
   check(qp.max_violation(x) == 0., "feasible");
@@ -224,10 +231,11 @@ solve_gauss_seidel(const unsigned int    levels,
 int
 main(int argc, char *argv[])
 {
-  // the reference solver factorizes with Trilinos (Amesos KLU): MPI first
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // MPI first: the mesh is a parallel::distributed::Triangulation, and the
+  // reference solver factorizes with Trilinos (Amesos KLU)
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
   check_compressed_matrix(5);
-  const Vector<double> x2 = solve_active_set(2);
+  const LevelVector x2 = solve_active_set(2);
   solve_active_set(4);
   // the FOSLS matrix is ill conditioned (diagonally scaled: ~3e4 on 2
   // levels, ~2e5 on 3), so PGS needs many sweeps (rate ~0.9997)

@@ -13,6 +13,11 @@
 //    point by point (deal.II 9.4's MGTransferPrebuilt ignores the RT sign
 //    flips: it does not);
 //  - P maps a constant displacement component to the same constant.
+// LevelTransfer::prolongate works on LevelVectors; the reference
+// (MGTransferPrebuilt<Vector<double>>) on serial vectors: the test runs on
+// one MPI process, which owns every DoF, and copies between the two (local
+// indices of a level = global ones).
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/multigrid/mg_transfer.h>
@@ -23,6 +28,17 @@
 #include "tests.h"
 
 using namespace FoslsContactTests;
+
+/** The owned entries of @p x as a serial vector, at their global indices. */
+Vector<double>
+to_serial(const LevelVector &x)
+{
+  Vector<double> result(x.size());
+  for (unsigned int i = 0; i < x.locally_owned_size(); ++i)
+    result[x.get_partitioner()->local_to_global(i)] = x.local_element(i);
+  return result;
+}
+
 
 /** All components of the level function @p x on @p cell at the points of @p fe_values. */
 template <int dim, typename Iterator>
@@ -56,7 +72,7 @@ test(const std::string &                                     title,
   all.emplace_back("Geometry/Levels", std::to_string(n_levels));
   const auto                parameters = make_parameters(scene_file(file), all);
   const Scene<dim>          scene(parameters);
-  const Discretization<dim> discretization(scene, n_levels);
+  const Discretization<dim> discretization(scene, n_levels, MPI_COMM_WORLD);
   const LevelTransfer<dim>  transfer(discretization);
   const auto &              fe      = discretization.get_fe();
   const auto &              mapping = discretization.get_mapping();
@@ -73,7 +89,10 @@ test(const std::string &                                     title,
       const std::string step = "level " + std::to_string(l) + " -> " + std::to_string(l + 1);
       const auto &      coarse = discretization.level(l - 1);
       const auto &      fine   = discretization.level(l);
-      Vector<double>    src(coarse.n_dofs), dst(fine.n_dofs), dst_ref(fine.n_dofs);
+      // x and P x as LevelVectors, and as serial vectors for the reference
+      LevelVector    src_level = make_vector(coarse.partitioner);
+      LevelVector    dst_level = make_vector(fine.partitioner);
+      Vector<double> src(coarse.n_dofs), dst(fine.n_dofs), dst_ref(fine.n_dofs);
       std::cout << step << ": " << coarse.n_dofs << " -> " << fine.n_dofs
                 << " DoFs, " << transfer.prolongation(l).n_nonzero_elements()
                 << " entries in P" << std::endl;
@@ -83,9 +102,11 @@ test(const std::string &                                     title,
       unsigned int n_parents = 0, n_skipped = 0;
       for (unsigned int k = 0; k < 3; ++k)
         {
-          for (auto &v : src)
+          for (auto &v : src_level)
             v = random();
-          transfer.prolongate(l, dst, src);
+          transfer.prolongate(l, dst_level, src_level);
+          src = to_serial(src_level);
+          dst = to_serial(dst_level);
           reference.prolongate(l, dst_ref, src);
           Vector<double> difference(dst_ref);
           difference -= dst;
@@ -154,14 +175,14 @@ test(const std::string &                                     title,
       bool constants_ok = true;
       for (unsigned int k = 0; k < dim; ++k)
         {
-          src = 0;
+          src_level = 0;
           for (const auto &[v, dofs] : coarse.vertex_dofs)
-            src[dofs[k]] = 1.;
-          transfer.prolongate(l, dst, src);
-          Vector<double> expected(fine.n_dofs);
+            src_level.local_element(dofs[k]) = 1.;
+          transfer.prolongate(l, dst_level, src_level);
+          LevelVector expected = make_vector(fine.partitioner);
           for (const auto &[v, dofs] : fine.vertex_dofs)
-            expected[dofs[k]] = 1.;
-          expected -= dst;
+            expected.local_element(dofs[k]) = 1.;
+          expected -= dst_level;
           constants_ok &= expected.linfty_norm() < 1e-14;
         }
       check(constants_ok, step + ": constant displacement components are preserved");
@@ -170,8 +191,9 @@ test(const std::string &                                     title,
 
 
 int
-main()
+main(int argc, char *argv[])
 {
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
   test<2>("square", "square.prm", 4, {}, true);
   test<3>("cube", "cube3d.prm", 3, {}, true);
   test<2>("half disc", "hertz.prm", 3, {}, false);

@@ -20,8 +20,9 @@ using namespace FoslsContactTests;
 int
 main(int argc, char *argv[])
 {
-  // the reference solver factorizes with Trilinos (Amesos KLU): MPI first
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // MPI first: the mesh is a parallel::distributed::Triangulation, and the
+  // reference solver factorizes with Trilinos (Amesos KLU)
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
   std::vector<ErrorNorms> errors;
   const unsigned int      first = 3, last = 6;
   for (unsigned int levels = first; levels <= last; ++levels)
@@ -31,13 +32,13 @@ main(int argc, char *argv[])
                         {{"Geometry/Levels", std::to_string(levels)},
                          {"Solver/Type", "active set"}});
       const Scene<2>          scene(parameters);
-      const Discretization<2> discretization(scene, levels);
+      const Discretization<2> discretization(scene, levels, MPI_COMM_WORLD);
       const unsigned int      L = discretization.finest_level();
       ConstrainedQP           qp;
       qp.reinit(discretization.level(L));
       FoslsAssembler<2>(discretization, parameters.material, parameters.weights)
         .assemble(L, qp);
-      Vector<double>           x(qp.size());
+      LevelVector              x = qp.new_vector();
       const ConditionalOStream quiet(std::cout, false);
       Monitor                  monitor(qp, parameters.solver, quiet, "active set");
       ActiveSetDirect().solve(qp, x, monitor);

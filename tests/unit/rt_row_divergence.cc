@@ -10,6 +10,7 @@
 // If a deal.II upgrade fixes the Tensor extractor, the reported line
 // changes and this test fails: the workaround can then be revisited.
 #include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
@@ -165,8 +166,9 @@ test()
 
 
 int
-main()
+main(int argc, char *argv[])
 {
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
   test<2>();
   test<3>();
   return exit_code();

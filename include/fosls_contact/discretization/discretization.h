@@ -1,15 +1,17 @@
 #ifndef fosls_contact_discretization_discretization_h
 #define fosls_contact_discretization_discretization_h
 
-#include <deal.II/lac/full_matrix.h>
+#include <deal.II/base/partitioner.h>
 #include <deal.II/base/point.h>
+#include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
-#include <deal.II/grid/tria.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
-#include <deal.II/lac/vector.h>
 
+#include <fosls_contact/qp/level_algebra.h>
+#include <fosls_contact/qp/matrix_entry_import.h>
 #include <fosls_contact/scene/scene.h>
 
 #include <map>
@@ -29,7 +31,7 @@ namespace FoslsContact
   /**
    * A block of DoFs whose coordinates are changed to the normal-tangential
    * system of paper section 4.3: x_cartesian = matrix * x_rotated on
-   * `dofs`. The first rotated coordinate is the normal one.
+   * `dofs` (local indices). The first rotated coordinate is the normal one.
    */
   template <int dim>
   struct RotationBlock
@@ -39,7 +41,10 @@ namespace FoslsContact
     FullMatrix<double>                       inverse;
   };
 
-  /** A contact vertex on one level: u.n <= g bounds DoF `normal_dof`. */
+  /**
+   * A contact vertex on one level: u.n <= g bounds DoF `normal_dof` (a
+   * local index; `owned` if this process owns it).
+   */
   template <int dim>
   struct ContactVertex
   {
@@ -48,6 +53,7 @@ namespace FoslsContact
     Point<dim>               point;
     Tensor<1, dim>           normal;
     double                   gap;
+    bool                     owned;
   };
 
   /** A contact face on one level: (sigma n).n <= 0 bounds `normal_dof`. */
@@ -59,30 +65,58 @@ namespace FoslsContact
     Point<dim>               center;
     Tensor<1, dim>           normal;
     double                   area;
+    bool                     owned;
   };
 
   /**
-   * Everything the algebra needs to know about one level: its DoF roles,
-   * the values of fixed DoFs and the upper bounds (both in the rotated
-   * basis), the rotations, and the contact entities.
+   * Everything the algebra needs to know about one level, on this process:
+   * the DoFs it owns and its ghost DoFs (those of the ghost cells around
+   * its own cells; `partitioner`), and for all of them, in local indices
+   * (LevelVector): the DoF roles, the values of fixed DoFs and the upper
+   * bounds (both in the rotated basis), the rotations, and the contact
+   * entities.
    */
   template <int dim>
   struct LevelData
   {
+    /** The number of DoFs of the level (all processes). */
     types::global_dof_index                 n_dofs = 0;
+    std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
+    /** Local DoFs: owned, then ghosts. */
+    unsigned int n_owned() const { return partitioner->locally_owned_size(); }
+    unsigned int n_local() const
+    {
+      return partitioner->locally_owned_size() + partitioner->n_ghost_indices();
+    }
+    /** The global index of local DoF @p i. */
+    types::global_dof_index global(const unsigned int i) const
+    {
+      return partitioner->local_to_global(i);
+    }
     std::vector<DoFRole>                    role;
-    Vector<double>                          fixed_values;
-    Vector<double>                          upper_bounds;
+    LevelVector                             fixed_values;
+    LevelVector                             upper_bounds;
     std::vector<RotationBlock<dim>>         rotations;
-    /** For each DoF, the index of its rotation block, or invalid. */
+    /** For each local DoF, the index of its rotation block, or invalid. */
     std::vector<unsigned int>               rotation_of_dof;
+    /** The contact vertices and faces of the cells of this process. */
     std::vector<ContactVertex<dim>>         contact_vertices;
     std::vector<ContactFace<dim>>           contact_faces;
     /** vertex index -> its displacement DoFs (component by component). */
     std::map<unsigned int, std::array<types::global_dof_index, dim>> vertex_dofs;
     /** face index -> its RT DoFs (stress row by row). */
     std::map<unsigned int, std::array<types::global_dof_index, dim>> face_dofs;
+    /**
+     * The coupling pattern of the level's cells, in local indices, for the
+     * rows this process holds: its own DoFs, and the ghost DoFs of the
+     * vertex patches at the vertices of its cells (the patch smoother
+     * relaxes every patch with a DoF of its own, and needs the rows of all
+     * the patch's DoFs). Every level matrix lies on it: the assembled one
+     * and the Galerkin operators (MonotoneMultigrid).
+     */
     SparsityPattern                         sparsity;
+    /** The ghost rows of `sparsity`, copied from their owners. */
+    MatrixEntryImport                       ghost_rows;
   };
 
   /**
@@ -95,14 +129,36 @@ namespace FoslsContact
    * active mesh, and using one numbering for every level makes the
    * multilevel hierarchy, the constraints and the assembly one code path.
    * Output maps the finest level back to the active numbering.
+   *
+   * The mesh is a parallel::distributed::Triangulation (p4est) with
+   * multigrid levels, distributed over the processes of @p comm; with one
+   * process it is the whole mesh. On every level a process owns the cells
+   * p4est gives it (a coarse cell belongs to the owner of its first child)
+   * and sees the ghost cells around them; measured (2D and 3D, 1 to 3
+   * processes): the cells around every vertex of an owned cell, the
+   * children of owned cells and the parents of ghost cells are always
+   * there. That is what the level data, the patches and the transfer
+   * below rely on.
    */
   template <int dim>
   class Discretization
   {
   public:
-    Discretization(const Scene<dim> &scene, const unsigned int n_levels);
+    Discretization(const Scene<dim> &scene,
+                   const unsigned int n_levels,
+                   const MPI_Comm     comm);
 
-    const Triangulation<dim> &get_triangulation() const { return triangulation; }
+    const parallel::distributed::Triangulation<dim> &get_triangulation() const
+    {
+      return triangulation;
+    }
+    MPI_Comm get_communicator() const { return triangulation.get_communicator(); }
+    /** Whether @p cell (of any level) has DoFs here: owned or ghost. */
+    template <typename Iterator>
+    static bool is_present(const Iterator &cell)
+    {
+      return cell->level_subdomain_id() != numbers::artificial_subdomain_id;
+    }
     const DoFHandler<dim> &   get_dof_handler() const { return dof_handler; }
     const FESystem<dim> &     get_fe() const { return fe; }
     const Mapping<dim> &      get_mapping() const { return mapping; }
@@ -117,14 +173,15 @@ namespace FoslsContact
 
     /**
      * Map a vector in the level numbering of the finest level to the
-     * active numbering (for DataOut and error integration).
+     * active numbering (for DataOut and error integration); the result has
+     * its ghost values (those of the active ghost cells).
      */
-    Vector<double> to_active(const Vector<double> &level_vector) const;
+    LevelVector to_active(const LevelVector &level_vector) const;
 
-    /** x_cartesian = R x_rotated on level @p l. */
-    void rotate_to_cartesian(const unsigned int l, Vector<double> &x) const;
-    /** x_rotated = R^{-1} x_cartesian on level @p l. */
-    void rotate_to_normal_tangential(const unsigned int l, Vector<double> &x) const;
+    /** x_cartesian = R x_rotated on level @p l (all local entries). */
+    void rotate_to_cartesian(const unsigned int l, LevelVector &x) const;
+    /** x_rotated = R^{-1} x_cartesian on level @p l (all local entries). */
+    void rotate_to_normal_tangential(const unsigned int l, LevelVector &x) const;
 
     /** The Householder reflection H with H e_1 = n (paper section 4.3). */
     static FullMatrix<double> householder(const Tensor<1, dim> &n);
@@ -133,11 +190,12 @@ namespace FoslsContact
     void setup_level(const unsigned int l);
     /** x <- R x (or R^{-1} x) block by block on level @p l. */
     void apply_rotations(const unsigned int l,
-                         Vector<double> &   x,
+                         LevelVector &      x,
                          const bool         inverse) const;
 
     const Scene<dim> &      scene;
-    Triangulation<dim>      triangulation;
+    parallel::distributed::Triangulation<dim> triangulation;
+    std::shared_ptr<const Utilities::MPI::Partitioner> active_partitioner;
     FESystem<dim>           fe;
     MappingQ<dim>           mapping;
     DoFHandler<dim>         dof_handler;

@@ -3,7 +3,6 @@
 
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
-#include <deal.II/lac/vector.h>
 
 #include <fosls_contact/discretization/discretization.h>
 
@@ -25,6 +24,10 @@ namespace FoslsContact
    * corrected for (MGTransferPrebuilt of deal.II 9.4 ignores them). The
    * test tests/unit/level_transfer checks that a coarse function and its
    * prolongation agree point by point.
+   *
+   * On a distributed mesh each process has the rows of all its local fine
+   * DoFs (owned and ghost): every cell here has its parent here, and the
+   * columns are local coarse DoFs.
    */
   template <int dim>
   class LevelTransfer
@@ -32,16 +35,19 @@ namespace FoslsContact
   public:
     explicit LevelTransfer(const Discretization<dim> &discretization);
 
-    /** Prolongation from level @p to_level - 1 to level @p to_level. */
+    /**
+     * Prolongation from level @p to_level - 1 to level @p to_level (local
+     * matrix: local fine rows, local coarse columns).
+     */
     const SparseMatrix<double> &prolongation(const unsigned int to_level) const
     {
       return *matrices[to_level];
     }
 
-    /** dst = P src, Cartesian coordinates. */
-    void prolongate(const unsigned int    to_level,
-                    Vector<double> &      dst,
-                    const Vector<double> &src) const;
+    /** dst = P src (owned entries of @p dst), Cartesian coordinates. */
+    void prolongate(const unsigned int to_level,
+                    LevelVector &      dst,
+                    const LevelVector &src) const;
 
   private:
     std::vector<std::unique_ptr<SparsityPattern>>      sparsities;

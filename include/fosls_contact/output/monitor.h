@@ -42,14 +42,14 @@ namespace FoslsContact
             const std::string &          solver_name);
 
     /** Record the starting iterate as iteration 0. */
-    void start(const Vector<double> &x);
+    void start(const LevelVector &x);
 
     /**
      * Record iteration @p x (after @p x_old); print; return true when the
      * stopping criterion is met or the iteration limit is reached
      * (converged() tells which).
      */
-    bool report(const Vector<double> &x, const Vector<double> &x_old);
+    bool report(const LevelVector &x, const LevelVector &x_old);
 
     /** A solver found J(new) > J(old) at a sub-step. */
     void note_energy_increase() { ++n_energy_increases; }
@@ -91,7 +91,10 @@ namespace FoslsContact
     const ConditionalOStream &    pcout;
     const std::string             solver_name;
     std::vector<IterationRecord>  history;
-    /** The active set of the last iterate, and the iteration it last changed. */
+    /**
+     * The active set of the last iterate (owned DoFs), and the iteration
+     * it last changed (on any process).
+     */
     std::vector<bool>             active_set;
     unsigned int                  active_set_changed_at  = 0;
     Timer                         timer;

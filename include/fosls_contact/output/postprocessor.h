@@ -1,8 +1,6 @@
 #ifndef fosls_contact_output_postprocessor_h
 #define fosls_contact_output_postprocessor_h
 
-#include <deal.II/lac/vector.h>
-
 #include <fosls_contact/discretization/discretization.h>
 #include <fosls_contact/output/monitor.h>
 #include <fosls_contact/parameters.h>
@@ -30,6 +28,11 @@ namespace FoslsContact
    * table, error norms), then writes every output file. All files are first
    * written into a staging directory and then renamed into the output
    * directory, so an interrupted run never leaves a half-written file.
+   *
+   * Distributed: every process integrates over its own cells and writes
+   * one VTU piece of them; the numbers are summed over the processes, the
+   * contact table gathered (rows sorted by position), and the first
+   * process writes the other files and moves everything into place.
    */
   template <int dim>
   class Postprocessor
@@ -38,24 +41,30 @@ namespace FoslsContact
     Postprocessor(const Discretization<dim> &   discretization,
                   const Parameters::AllParameters &parameters);
 
-    /** Solution (finest level, rotated basis) -> Cartesian active vector. */
-    Vector<double> cartesian_active(const Vector<double> &x_rotated) const;
+    /**
+     * Solution (finest level, rotated basis) -> Cartesian active vector,
+     * with its ghost values.
+     */
+    LevelVector cartesian_active(const LevelVector &x_rotated) const;
 
     /** Total contact force: the integral of sigma n over Gamma_C. */
-    Tensor<1, dim> contact_force(const Vector<double> &active_solution) const;
+    Tensor<1, dim> contact_force(const LevelVector &active_solution) const;
 
     /** Error norms against Data/Exact displacement and Exact stress. */
-    ErrorNorms errors(const Vector<double> &active_solution) const;
+    ErrorNorms errors(const LevelVector &active_solution) const;
 
-    /** One row per contact vertex of the finest level. */
-    std::string contact_table(const Vector<double> &x_rotated) const;
+    /**
+     * One row per contact vertex of the finest level, sorted by position
+     * (on the first process; collective).
+     */
+    std::string contact_table(const LevelVector &x_rotated) const;
 
     /**
      * Write VTU (+pvtu), contact.csv, convergence.csv, summary.json and
      * used_parameters.prm. @p summary holds the JSON fields (already
      * formatted values).
      */
-    void write(const Vector<double> &                     x_rotated,
+    void write(const LevelVector &                        x_rotated,
                const Monitor &                            monitor,
                const std::map<std::string, std::string> &summary,
                const std::string &                        used_parameters) const;

@@ -2,9 +2,9 @@
 #define fosls_contact_qp_constrained_qp_h
 
 #include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/vector.h>
 
 #include <fosls_contact/discretization/discretization.h>
+#include <fosls_contact/qp/level_algebra.h>
 
 namespace FoslsContact
 {
@@ -27,12 +27,23 @@ namespace FoslsContact
   };
 
   /**
-   * Set the entries of @p matrix with |a_ij| <= drop sqrt(|a_ii a_jj|) to
-   * 0 (in parallel, by rows). With drop = ConstrainedQP::round_off_drop
+   * Set the entries of the owned rows of @p matrix (a local matrix on
+   * @p partitioner's indices) with |a_ij| <= drop sqrt(|a_ii a_jj|) to 0
+   * (in parallel, by rows). With drop = ConstrainedQP::round_off_drop
    * these are the entries that exact arithmetic makes zero: couplings that
-   * cancel in the assembly of A, or in a Galerkin product of it.
+   * cancel in the assembly of A, or in a Galerkin product of it. The
+   * diagonal of the ghost columns comes from their owners.
    */
-  void zero_round_off(SparseMatrix<double> &matrix, const double drop);
+  void zero_round_off(SparseMatrix<double> &                                     matrix,
+                      const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+                      const double                                               drop);
+
+  /**
+   * The diagonal of a local matrix (owned rows), with its ghost values:
+   * the diagonal entries of the ghost DoFs, from their owners.
+   */
+  LevelVector diagonal(const SparseMatrix<double> &                                matrix,
+                       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner);
 
 
   /**
@@ -48,6 +59,12 @@ namespace FoslsContact
    *
    * The matrices of the equilibrium and complementarity parts are kept as
    * well, only to report J's parts; the constitutive part is the rest.
+   *
+   * Distributed over the processes of the level (LevelVector): the
+   * vectors and the roles in local indices, the matrices as local matrices
+   * with the owned rows (and, for A, the ghost rows of the vertex patches,
+   * LevelData::sparsity). Every function that returns a number (J, norms,
+   * counts, residuals) returns the value over all processes.
    */
   struct ConstrainedQP
   {
@@ -68,8 +85,13 @@ namespace FoslsContact
      * SparseDirectSolver::initialize()).
      */
     const SparsityPattern *coupling_sparsity = nullptr;
-    Vector<double>         rhs;
-    double               constant = 0;
+    /** The level's partitioner: owned and ghost DoFs. */
+    std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
+    /** Copies the ghost rows of A (on coupling_sparsity) from their owners. */
+    const MatrixEntryImport *ghost_rows = nullptr;
+    LevelVector              rhs;
+    /** The constant of J (over all processes). */
+    double                   constant = 0;
 
     /**
      * After compress_matrices(), on patterns of their own nonzero
@@ -87,45 +109,57 @@ namespace FoslsContact
      * assembled A are below 1e-15, all others above 1e-8) and are dropped.
      */
     static constexpr double round_off_drop = 1e-13;
-    Vector<double>       rhs_eq, rhs_compl;
+    LevelVector          rhs_eq, rhs_compl;
     double               constant_eq = 0;
 
+    /** The role of every local DoF (owned and ghost). */
     std::vector<DoFRole> role;
     unsigned int         dimension = 2;
-    Vector<double>       fixed_values;
-    Vector<double>       upper_bounds;
+    /** With their ghost values. */
+    LevelVector          fixed_values;
+    LevelVector          upper_bounds;
 
     /** Size the matrices on @p sparsity and copy roles and bounds. */
     template <int dim>
     void reinit(const LevelData<dim> &level);
 
+    /** The number of DoFs (all processes). */
     types::global_dof_index size() const { return rhs.size(); }
+    /** The number of owned DoFs (the first local ones). */
+    unsigned int n_owned() const { return partitioner->locally_owned_size(); }
+    MPI_Comm get_communicator() const { return partitioner->get_mpi_communicator(); }
+    /** A zero vector of the level. */
+    LevelVector new_vector() const { return make_vector(partitioner); }
 
     /**
-     * Put A (without its round-off entries, see round_off_drop),
+     * After the owned rows were assembled: drop A's round-off entries
+     * (round_off_drop), copy its ghost rows from their owners, and put A,
      * matrix_eq and matrix_compl on patterns of their nonzero entries.
      */
     void compress_matrices();
 
     /** J(x). */
-    double value(const Vector<double> &x) const;
+    double value(const LevelVector &x) const;
     /** J(x) and its parts. */
-    FunctionalValue parts(const Vector<double> &x) const;
-    /** Set fixed DoFs to their values and cut bounded DoFs at their bound. */
-    void project_to_feasible(Vector<double> &x) const;
+    FunctionalValue parts(const LevelVector &x) const;
+    /**
+     * Set fixed DoFs to their values and cut bounded DoFs at their bound
+     * (all local entries: with valid ghost values in, valid ones out).
+     */
+    void project_to_feasible(LevelVector &x) const;
     /** Largest violation of a bound or of a fixed value. */
-    double max_violation(const Vector<double> &x) const;
-    /** Which DoFs are bounded and at their bound. */
-    std::vector<bool> active_set(const Vector<double> &x) const;
+    double max_violation(const LevelVector &x) const;
+    /** Which owned DoFs are bounded and at their bound. */
+    std::vector<bool> active_set(const LevelVector &x) const;
     /** Number of bounded DoFs at their bound. */
-    unsigned int n_active(const Vector<double> &x) const;
+    unsigned int n_active(const LevelVector &x) const;
     /** KKT residuals at x. */
-    KKTResidual kkt_residual(const Vector<double> &x) const;
+    KKTResidual kkt_residual(const LevelVector &x) const;
     /**
      * The energy norm sqrt(d^T A d) of a correction d (zero on fixed DoFs,
      * where A is positive definite).
      */
-    double energy_norm(const Vector<double> &d) const;
+    double energy_norm(const LevelVector &d) const;
     /**
      * The energy norm below which a correction at @p x is made of round-off.
      * The residual b - A x is known only to about eps s_i, with
@@ -137,7 +171,7 @@ namespace FoslsContact
      * two: measured on the square (levels 6-9, lambda = 1 and inf), the
      * corrections stop decreasing at 4-5 times this value.
      */
-    double round_off_correction(const Vector<double> &x) const;
+    double round_off_correction(const LevelVector &x) const;
 
   };
 } // namespace FoslsContact

@@ -14,7 +14,8 @@ namespace FoslsContact
    * ones). With I the other non-fixed DoFs, A is positive definite iff
    * A_II is (it is: plain FOSLS with a Dirichlet part) and the Schur
    * complement S = A_CC - A_CI A_II^{-1} A_IC is. S is small and dense: it
-   * costs one sparse factorization and |C| solves.
+   * costs one sparse factorization and |C| solves. It runs on a problem of
+   * one process (a GatheredQP).
    */
   struct DefinitenessCheck
   {

@@ -1,11 +1,13 @@
 #ifndef fosls_contact_qp_sparse_direct_solver_h
 #define fosls_contact_qp_sparse_direct_solver_h
 
+#include <deal.II/base/partitioner.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
-#include <deal.II/lac/vector.h>
+
+#include <fosls_contact/qp/level_algebra.h>
 
 #include <memory>
 
@@ -17,30 +19,37 @@ namespace FoslsContact
    * A sparse direct solver for the reference solver and the definiteness
    * check: Trilinos Amesos with KLU. On these FOSLS matrices KLU factorizes
    * about 8x faster than UMFPACK (measured: 25,090 DoFs 1.2 s vs 10.4 s;
-   * 99,330 DoFs 10 s), so it is the fairer reference.
+   * 99,330 DoFs 10 s), so it is the fairer reference. On several processes
+   * the matrix is a distributed Trilinos matrix; Amesos gathers it on one
+   * process to factorize it (KLU is serial), which limits the reference
+   * solver, not the multigrid method, to what one process can hold.
    */
   class SparseDirectSolver
   {
   public:
     SparseDirectSolver();
     /**
-     * Factorize @p matrix, on @p pattern (which must hold the matrix's
-     * pattern) if given: KLU's fill-reducing ordering (AMD) works on the
-     * pattern, and does far better on the DoF coupling pattern of the mesh
-     * than on the pattern of a ConstrainedQP's matrix, from which zero and
-     * round-off entries are gone (square, level 7, active set solve: 1.3 s
-     * against 31 s; 11 s with explicit zeros only removed).
+     * Factorize the local matrix @p matrix (its owned rows, columns in the
+     * local indices of @p partitioner), on @p pattern (which must hold the
+     * matrix's pattern) if given: KLU's fill-reducing ordering (AMD) works
+     * on the pattern, and does far better on the DoF coupling pattern of
+     * the mesh than on the pattern of a ConstrainedQP's matrix, from which
+     * zero and round-off entries are gone (square, level 7, active set
+     * solve: 1.3 s against 31 s; 11 s with explicit zeros only removed).
+     * Collective.
      */
-    void initialize(const SparseMatrix<double> &matrix,
-                    const SparsityPattern *     pattern = nullptr);
-    /** x = A^{-1} b with the factorization of initialize(). */
-    void vmult(Vector<double> &x, const Vector<double> &b) const;
+    void initialize(const SparseMatrix<double> &                               matrix,
+                    const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+                    const SparsityPattern *                                    pattern = nullptr);
+    /** x = A^{-1} b (owned entries) with the factorization of initialize(). */
+    void vmult(LevelVector &x, const LevelVector &b) const;
 
   private:
-    SolverControl                                      control;
-    std::unique_ptr<TrilinosWrappers::SparseMatrix>    matrix;
+    SolverControl                                           control;
+    std::shared_ptr<const Utilities::MPI::Partitioner>      partitioner;
+    std::unique_ptr<TrilinosWrappers::SparseMatrix>         matrix;
     mutable std::unique_ptr<TrilinosWrappers::SolverDirect> solver;
-    mutable TrilinosWrappers::MPI::Vector              x_t, b_t;
+    mutable TrilinosWrappers::MPI::Vector                   x_t, b_t;
   };
 } // namespace FoslsContact
 

@@ -11,27 +11,29 @@ namespace FoslsContact
    * system in every step. It stops when the active set repeats, i.e. at the
    * exact discrete KKT point. The test for the active set,
    * mu_i + c_i (x_i - ub_i) > 0, uses c_i = A_ii so that it is invariant to
-   * the scaling of the DoFs.
+   * the scaling of the DoFs. Distributed like the problem: every process
+   * tests its own DoFs, the direct solver factorizes the distributed
+   * matrix (SparseDirectSolver).
    */
   class ActiveSetDirect : public QPSolver
   {
   public:
     void solve(const ConstrainedQP &qp,
-               Vector<double> &     x,
+               LevelVector &        x,
                Monitor &            monitor) override;
 
     /**
      * The same method without a monitor, for small problems (the coarsest
-     * level of the multigrid method). DoFs with a zero diagonal are treated
-     * as fixed at their value in @p x. Returns whether the active set
-     * settled within @p max_steps.
+     * level of the multigrid method, on one process). DoFs with a zero
+     * diagonal are treated as fixed at their value in @p x. Returns whether
+     * the active set settled within @p max_steps.
      */
     static bool solve_quietly(const SparseMatrix<double> &matrix,
-                                      const Vector<double> &      rhs,
-                                      const std::vector<DoFRole> &role,
-                                      const Vector<double> &      upper_bounds,
-                                      Vector<double> &            x,
-                                      const unsigned int          max_steps);
+                              const LevelVector &         rhs,
+                              const std::vector<DoFRole> &role,
+                              const LevelVector &         upper_bounds,
+                              LevelVector &               x,
+                              const unsigned int          max_steps);
 
   private:
     enum class Outcome
@@ -48,10 +50,10 @@ namespace FoslsContact
      * SparseDirectSolver::initialize()).
      */
     static Outcome iterate(const SparseMatrix<double> &A,
-                           const Vector<double> &      b,
+                           const LevelVector &         b,
                            const std::vector<DoFRole> &role,
-                           const Vector<double> &      ub,
-                           Vector<double> &            x,
+                           const LevelVector &         ub,
+                           LevelVector &               x,
                            const unsigned int          max_steps,
                            Monitor *                   monitor,
                            const SparsityPattern *     factorization_pattern = nullptr);

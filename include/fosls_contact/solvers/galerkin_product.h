@@ -1,9 +1,11 @@
 #ifndef fosls_contact_solvers_galerkin_product_h
 #define fosls_contact_solvers_galerkin_product_h
 
+#include <deal.II/base/partitioner.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
-#include <deal.II/lac/vector.h>
+
+#include <fosls_contact/qp/level_algebra.h>
 
 #include <vector>
 
@@ -18,44 +20,93 @@ namespace FoslsContact
    * the finest levels the products are recomputed whenever the truncation
    * changes, which made them a fifth of the solve time at level 9).
    *
-   * The product A P~ is computed by rows of A; P~^T (A P~) by rows of the
-   * result, i.e. by columns of P~, for which the pattern of P~ is
-   * transposed once in initialize(). Every entry is summed in a fixed
-   * order, so the result does not depend on the number of threads.
+   * The product A P~ is computed by the owned rows of A; P~^T (A P~) by
+   * rows of the result, i.e. by columns of P~ (over the owned rows of P~),
+   * for which the pattern of P~ is transposed once in initialize(). A
+   * coarse row this process does not own gets only part of its sum here;
+   * the parts go to the row's owner, which adds them in the order of the
+   * processes. Every entry is thus summed in a fixed order: the result
+   * does not depend on the number of threads (with several processes, the
+   * partition fixes the order of the parts).
+   *
+   * The coarse operator is stored on the coupling pattern of the coarse
+   * level's cells (LevelData::sparsity): a coarse basis function
+   * prolongates to fine functions inside the coarse cells at its DoF, so
+   * two coarse DoFs that share no coarse cell have an exact zero (checked:
+   * a nonzero outside that pattern is an error).
    */
   class GalerkinProduct
   {
   public:
-    /** Transpose the pattern of the prolongation (n_fine x n_coarse). */
-    void initialize(const SparsityPattern &prolongation_pattern);
+    /**
+     * Set up the patterns: @p prolongation_pattern has the local fine rows
+     * and local coarse columns of P~, @p fine_pattern the rows of A (the
+     * owned rows are used), @p coarse_pattern is the pattern of the result.
+     * Collective.
+     */
+    void initialize(const SparsityPattern &                                    prolongation_pattern,
+                    const SparsityPattern &                                    fine_pattern,
+                    const std::shared_ptr<const Utilities::MPI::Partitioner> &fine_partitioner,
+                    const SparsityPattern &                                    coarse_pattern,
+                    const std::shared_ptr<const Utilities::MPI::Partitioner> &coarse_partitioner);
 
     /**
-     * product = A P, galerkin = P^T product. The patterns of @p product and
-     * @p galerkin must hold every entry of the products (as those of
-     * DynamicSparsityPattern::compute_mmult_pattern and
-     * compute_Tmmult_pattern do); @p P must have the pattern given to
-     * initialize().
+     * galerkin = P^T A P on the owned rows of @p galerkin (its ghost rows
+     * are left alone). @p A and @p P must be on the patterns given to
+     * initialize(). Collective.
      */
     void compute(const SparseMatrix<double> &A,
                  const SparseMatrix<double> &P,
-                 SparseMatrix<double> &      product,
                  SparseMatrix<double> &      galerkin);
 
     /**
-     * dst = P^T src for the P of the last compute(), by columns of P in
-     * parallel (SparseMatrix::Tvmult is serial: it scatters into dst).
+     * dst = P^T src (owned entries of @p dst) for the P of the last
+     * compute(), by columns of P in parallel. Collective.
      */
-    void Tvmult(Vector<double> &dst, const Vector<double> &src) const;
+    void Tvmult(LevelVector &dst, const LevelVector &src) const;
 
   private:
     /** The values of the last P, in the order of its pattern. */
     std::vector<double>       P_values;
-    /** Column j of P: entries transpose_start[j] .. transpose_start[j+1]. */
+    /**
+     * Column j of the owned rows of P: entries transpose_start[j] ..
+     * transpose_start[j+1].
+     */
     std::vector<std::size_t>  transpose_start;
     /** Row of each entry of a column, and its position in P's storage. */
     std::vector<unsigned int> transpose_row;
     std::vector<std::size_t>  transpose_position;
-    unsigned int              n_coarse = 0;
+    /**
+     * For every owned coarse row, the columns the product can reach that
+     * are not in the result's pattern (extra_columns[extra_start[j] ..
+     * extra_start[j+1]]): their sums must be exact zeros (checked).
+     */
+    std::vector<std::size_t>  extra_start;
+    std::vector<unsigned int> extra_columns;
+    /** A P, owned fine rows by local coarse columns. */
+    SparsityPattern           product_sparsity;
+    SparseMatrix<double>      product;
+    unsigned int              n_coarse_local = 0, n_coarse_owned = 0;
+
+    /**
+     * The parts of the ghost coarse rows: for every such row, the local
+     * coarse columns it can get (ghost_columns[ghost_start[r] ..
+     * ghost_start[r+1]]), and per owner process the rows it gets.
+     */
+    std::vector<unsigned int>  ghost_row;
+    std::vector<std::size_t>   ghost_start;
+    std::vector<unsigned int>  ghost_columns;
+    std::vector<double>        ghost_values;
+    /** Per process: its rank and the ranges of ghost rows it owns. */
+    std::vector<std::pair<unsigned int, std::pair<unsigned int, unsigned int>>> send_to;
+    /**
+     * Per process sending parts of rows owned here: its rank and, for each
+     * value it sends, the local (row, column), or an invalid row where the
+     * entry is outside the pattern (the value must be 0).
+     */
+    std::vector<std::pair<unsigned int, std::vector<std::pair<unsigned int, unsigned int>>>>
+             receive_from;
+    MPI_Comm comm = MPI_COMM_SELF;
   };
 } // namespace FoslsContact
 

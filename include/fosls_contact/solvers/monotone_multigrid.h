@@ -6,6 +6,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 
 #include <fosls_contact/discretization/level_transfer.h>
+#include <fosls_contact/qp/matrix_entry_import.h>
 #include <fosls_contact/parameters.h>
 #include <fosls_contact/solvers/box_qp.h>
 #include <fosls_contact/solvers/galerkin_product.h>
@@ -53,6 +54,15 @@ namespace FoslsContact
    * preconditions the Newton step removes such faces instead: there the
    * rerouted basis measured worse (half disc, 4 levels: 432 instead of 160
    * cycles; 2 levels: 15 instead of 32).
+   *
+   * Distributed over the processes of the mesh, the method is the same
+   * (same patch order and colors, same truncation, obstacles and coarse
+   * problems): vectors are LevelVectors, the level operators local
+   * matrices with the owned rows and the ghost rows of the patches
+   * (copied from their owners after every Galerkin product), the coarsest
+   * problem is gathered on every process and solved there. Numbers differ
+   * between process counts only by the order of sums (Galerkin products,
+   * dot products).
    */
   template <int dim>
   class MonotoneMultigrid : public QPSolver
@@ -71,7 +81,7 @@ namespace FoslsContact
                       const Parameters::Solver &  parameters);
 
     void solve(const ConstrainedQP &qp,
-               Vector<double> &     x,
+               LevelVector &        x,
                Monitor &            monitor) override;
 
     /**
@@ -100,10 +110,10 @@ namespace FoslsContact
      */
     void cycle(const unsigned int          l,
                const SparseMatrix<double> &A,
-               const Vector<double> &      r,
-               const Vector<double> &      ub,
+               const LevelVector &         r,
+               const LevelVector &         ub,
                const std::vector<DoFRole> &role,
-               Vector<double> &            v,
+               LevelVector &               v,
                const bool                  linear = false);
 
     /**
@@ -112,14 +122,17 @@ namespace FoslsContact
      * linear truncated cycle as preconditioner, projected line search,
      * projected post-smoothing. Returns the number of cycles applied.
      */
-    unsigned int newton_step(const ConstrainedQP &qp, Vector<double> &x);
+    unsigned int newton_step(const ConstrainedQP &qp, LevelVector &x);
 
-    /** Exact solution of the box-constrained coarsest problem. */
+    /**
+     * Exact solution of the box-constrained coarsest problem, gathered on
+     * every process (the coarse mesh is small) and solved there alike.
+     */
     void coarse_solve(const SparseMatrix<double> &A,
-                      const Vector<double> &      r,
-                      const Vector<double> &      ub,
+                      const LevelVector &         r,
+                      const LevelVector &         ub,
                       const std::vector<DoFRole> &role,
-                      Vector<double> &            v);
+                      LevelVector &               v);
 
     /** Truncated prolongation and Galerkin operator of level l - 1. */
     void update_coarse_operator(const unsigned int          l,
@@ -148,18 +161,32 @@ namespace FoslsContact
                       const SparseMatrix<double> &A,
                       const std::vector<DoFRole> &role,
                       const std::vector<bool> &   truncated,
-                      std::vector<bool> &         removed);
+                      std::vector<types::global_dof_index> &removed,
+                      std::vector<std::array<double, 3>> &  entries);
+
+    /**
+     * The entries of the level-@p l operator the flux rerouting reads on
+     * the faces owned here whose rows other processes own (global indices,
+     * sorted): the requests of rerouting_import[l].
+     */
+    std::vector<MatrixEntryImport::Entry> rerouting_requests(const unsigned int l) const;
+    /** Import them from the operator @p A of level @p l (collective). */
+    void import_rerouting_values(const unsigned int l, const SparseMatrix<double> &A);
 
     /** Work vectors of the cycle on one level (l: fine, l - 1: coarse). */
     struct Scratch
     {
+      /** Local fine DoFs (owned and ghost). */
       std::vector<bool> truncated;
-      Vector<double>    defect, residual, w;
-      Vector<double>    r_coarse, ub_coarse, c, Ac;
+      LevelVector       defect, residual, w;
+      LevelVector       r_coarse, ub_coarse, c, Ac;
       /** Fixed or switched off (zero diagonal): truncated in every visit. */
       std::vector<bool> fixed_truncated;
-      /** The bounded DoFs that are not fixed_truncated. */
+      /** The local bounded DoFs that are not fixed_truncated. */
       std::vector<types::global_dof_index> bounded;
+      /** The diagonal of the operator (with ghost values), and its version. */
+      LevelVector                           diagonal;
+      std::pair<const void *, unsigned int> diagonal_version{nullptr, 0};
       /** The operator and roles fixed_truncated was computed for. */
       std::pair<const void *, unsigned int> operator_version{nullptr, 0};
       std::vector<DoFRole>                  role;
@@ -180,20 +207,36 @@ namespace FoslsContact
 
     PatchSmoother                                      smoother;
     std::vector<DoFRole>                               linear_role, linear_role_used;
-    std::vector<SparsityPattern>                       galerkin_sparsity, product_sparsity;
     /** P's pattern plus the DoFs the flux rerouting may use (per level). */
     std::vector<SparsityPattern>                       prolongation_sparsity;
+    /** Per coarse contact face owned here (FaceRelation). */
     std::vector<std::vector<double>>                   face_scale;
-    std::vector<SparseMatrix<double>>                  galerkin, product;
+    /** The Galerkin operators, on the levels' coupling patterns. */
+    std::vector<SparseMatrix<double>>                  galerkin;
     std::vector<SparseMatrix<double>>                  truncated_prolongation;
     std::vector<GalerkinProduct>                       galerkin_product;
+    /**
+     * For the flux rerouting: the entries of the level's operator between
+     * the DoFs inside the coarse cells of the contact faces owned here
+     * whose rows other processes own (their requests, and the values of
+     * the last operator).
+     */
+    std::vector<MatrixEntryImport>                     rerouting_import;
+    std::vector<std::map<std::pair<types::global_dof_index, types::global_dof_index>, double>>
+                                                       rerouting_values;
     std::vector<Scratch>                               scratch;
     std::vector<std::vector<bool>>                     truncation_used;
     std::vector<unsigned int>                          version, version_used;
     std::vector<bool>                                  reroute_used;
-    /** The coarsest problem, factorized for one coarse operator. */
+    /**
+     * The coarsest problem, gathered on every process in global numbering
+     * (coarse_matrix_global) and factorized for one coarse operator.
+     */
     BoxQP                                              coarse_qp;
     std::vector<types::global_dof_index>               coarse_dofs;
+    SparsityPattern                                    coarse_sparsity_global;
+    SparseMatrix<double>                               coarse_matrix_global;
+    std::vector<DoFRole>                               coarse_role_global;
     const SparseMatrix<double> *                       coarse_matrix  = nullptr;
     unsigned int                                       coarse_version = numbers::invalid_unsigned_int;
     TimerOutput *                                      timer   = nullptr;

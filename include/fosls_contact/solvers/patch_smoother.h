@@ -2,7 +2,6 @@
 #define fosls_contact_solvers_patch_smoother_h
 
 #include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/vector.h>
 #include <deal.II/multigrid/mg_smoother.h>
 
 #include <fosls_contact/discretization/discretization.h>
@@ -38,8 +37,18 @@ namespace FoslsContact
    * one color. (A greedy coloring with the fewest colors, i.e. a
    * multicolor Gauss-Seidel order, was measured too: plain V(3,3) on the
    * square, lambda = 1, asymptotic rate 0.67-0.71 instead of 0.27-0.35.)
+   *
+   * Distributed: a process relaxes every patch with a DoF it owns, so a
+   * patch at the border of its cells is relaxed by each process that owns
+   * one of its DoFs, from the same values (the ghost values are updated
+   * after every color), with the same rows (ghost rows are copies of their
+   * owners') in the same order (global order of the DoFs and columns): to
+   * the same bits. Each process thus has the new values of its own DoFs,
+   * and the sweep is the sequential one for any number of processes too.
+   * An energy increase of a patch is counted by the owner of its first
+   * moving DoF only.
    */
-  class PatchSmoother : public MGSmoother<Vector<double>>
+  class PatchSmoother : public MGSmoother<LevelVector>
   {
   public:
     explicit PatchSmoother(const unsigned int n_levels);
@@ -54,7 +63,9 @@ namespace FoslsContact
                           const SparseMatrix<double> &                            matrix,
                           const std::vector<std::vector<types::global_dof_index>> &patches,
                           const std::vector<unsigned int> &                       colors,
-                          const std::vector<DoFRole> &                            role);
+                          const unsigned int                                      n_colors,
+                          const std::vector<DoFRole> &                            role,
+                          const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner);
 
     /**
      * The roles of the linear problem of a Newton step on level @p l (set
@@ -76,19 +87,24 @@ namespace FoslsContact
     }
 
     /** Obstacles of level @p l: the upper bounds of bounded DoFs. */
-    void set_obstacles(const unsigned int l, const Vector<double> &upper_bounds);
+    void set_obstacles(const unsigned int l, const LevelVector &upper_bounds);
     /** Forward (pre-smoothing) or backward (post-smoothing) patch order. */
     void set_backward(const bool backward) { this->backward = backward; }
 
-    void smooth(const unsigned int    level,
-                Vector<double> &      v,
-                const Vector<double> &r) const override;
+    /**
+     * The sweeps on level @p level: @p v changes on the owned DoFs and the
+     * ghost DoFs of the patches relaxed here; its ghost values are valid
+     * afterwards. Collective.
+     */
+    void smooth(const unsigned int level,
+                LevelVector &      v,
+                const LevelVector &r) const override;
     void clear() override;
 
     /** Patch steps whose objective change was positive beyond round-off. */
     unsigned int energy_increases() const { return n_increases; }
 
-    /** Number of colors of level @p l (0 before initialize_level). */
+    /** Number of colors of level @p l, over all processes. */
     unsigned int n_colors(const unsigned int l) const
     {
       return levels[l].color_start.empty() ? 0 : levels[l].color_start.size() - 1;
@@ -121,7 +137,9 @@ namespace FoslsContact
      */
     struct Level
     {
-      const Vector<double> *               obstacles = nullptr;
+      const LevelVector *                  obstacles = nullptr;
+      /** The patch's energy check counts here (see the class doc). */
+      std::vector<bool>                    counted;
       std::vector<unsigned int>            start;
       std::vector<std::size_t>             inverse_start;
       std::vector<std::size_t>             neighbor_start;
@@ -152,11 +170,11 @@ namespace FoslsContact
      * Relax the packed patches [begin, end) of @p level once (they are of
      * one color, so their order does not matter).
      */
-    void relax_patches(const Level &         level,
-                       const unsigned int    begin,
-                       const unsigned int    end,
-                       Vector<double> &      v,
-                       const Vector<double> &r) const;
+    void relax_patches(const Level &      level,
+                       const unsigned int begin,
+                       const unsigned int end,
+                       LevelVector &      v,
+                       const LevelVector &r) const;
 
     std::vector<Level>                levels;
     bool                              backward    = false;

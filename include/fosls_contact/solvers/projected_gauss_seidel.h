@@ -15,7 +15,7 @@ namespace FoslsContact
   {
   public:
     void solve(const ConstrainedQP &qp,
-               Vector<double> &     x,
+               LevelVector &        x,
                Monitor &            monitor) override;
   };
 } // namespace FoslsContact

@@ -16,7 +16,7 @@ namespace FoslsContact
   public:
     virtual ~QPSolver() = default;
     virtual void solve(const ConstrainedQP &qp,
-                       Vector<double> &     x,
+                       LevelVector &        x,
                        Monitor &            monitor) = 0;
   };
 } // namespace FoslsContact

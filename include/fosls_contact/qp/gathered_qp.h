@@ -1,0 +1,50 @@
+#ifndef fosls_contact_qp_gathered_qp_h
+#define fosls_contact_qp_gathered_qp_h
+
+#include <fosls_contact/qp/constrained_qp.h>
+
+namespace FoslsContact
+{
+  /**
+   * A ConstrainedQP gathered in global numbering on the first process (or
+   * on every process), as a problem of that process alone (MPI_COMM_SELF):
+   * for what works on the whole matrix at once and is meant for one
+   * process, the definiteness check (a small level) and projected
+   * Gauss-Seidel (the serial baseline, which sweeps the DoFs in their
+   * global order). It holds A, its coupling pattern, b, the roles, the
+   * fixed values and the bounds (not the matrices of J's parts).
+   */
+  class GatheredQP
+  {
+  public:
+    /** Collective. */
+    GatheredQP(const ConstrainedQP &distributed, const bool on_every_process);
+
+    /** Whether this process holds the gathered problem. */
+    bool here() const { return holder; }
+    /** The gathered problem (on the holders). */
+    const ConstrainedQP &qp() const { return serial; }
+
+    /**
+     * The owned entries of @p x of all processes, in global order, as a
+     * vector of the gathered problem (on the holders). Collective.
+     */
+    LevelVector gather(const LevelVector &x) const;
+    /**
+     * The entries of @p whole (a vector of the gathered problem, on the
+     * first process) to the owned entries of @p x on every process.
+     * Collective.
+     */
+    void scatter(const LevelVector &whole, LevelVector &x) const;
+
+  private:
+    MPI_Comm                  comm;
+    bool                      everyone, holder;
+    /** The first global index and the number of owned DoFs per process. */
+    std::vector<int>          first, count;
+    SparsityPattern           coupling;
+    ConstrainedQP             serial;
+  };
+} // namespace FoslsContact
+
+#endif

@@ -1,0 +1,156 @@
+#ifndef fosls_contact_qp_level_algebra_h
+#define fosls_contact_qp_level_algebra_h
+
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/partitioner.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/sparse_matrix.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace FoslsContact
+{
+  using namespace dealii;
+
+  /**
+   * A vector of one level, distributed over the MPI processes: each process
+   * stores the DoFs it owns and, after update_ghost_values(), copies of its
+   * ghost DoFs (those of the ghost cells around its own). Local index i
+   * (owned DoFs first, in global order, then the ghosts in global order) is
+   * the index of every local array of the program: roles, matrices, patch
+   * lists. With one process there are no ghosts and the local index is the
+   * global one.
+   */
+  using LevelVector = LinearAlgebra::distributed::Vector<double>;
+
+  /**
+   * The local elements of a LevelVector (owned, then ghosts) seen as a
+   * vector of their own, so that deal.II's SparseMatrix kernels work on the
+   * local matrices of the program (square, in local indices) without a
+   * copy. Has exactly what SparseMatrix::vmult needs.
+   */
+  class LocalElements
+  {
+  public:
+    using value_type     = double;
+    using iterator       = double *;
+    using const_iterator = const double *;
+    using size_type      = types::global_dof_index;
+
+    explicit LocalElements(LevelVector &v);
+    explicit LocalElements(const LevelVector &v);
+
+    size_type size() const { return n; }
+    iterator begin() { return data; }
+    const_iterator begin() const { return data; }
+    double operator()(const size_type i) const { return data[i]; }
+    double &operator()(const size_type i) { return data[i]; }
+
+  private:
+    double *  data;
+    size_type n;
+  };
+
+  /**
+   * dst = A src for a local matrix @p A (rows and columns in local indices;
+   * the owned rows are complete, ghost rows are complete or empty). The
+   * ghost values of @p src are updated first; the owned entries of @p dst
+   * are the product, its ghost entries are not valid afterwards.
+   */
+  void vmult(const SparseMatrix<double> &A, LevelVector &dst, const LevelVector &src);
+
+  /** x^T A x over the owned rows, summed over the processes. */
+  double matrix_norm_square(const SparseMatrix<double> &A, const LevelVector &x);
+
+  /**
+   * What this process sent to others point to point (ghost updates, the
+   * parts of ghost entries sent to their owners, imported matrix entries,
+   * parts of Galerkin rows): the number of exchanges and of values, for the
+   * communication volume per cycle that summary.json reports. Counted only
+   * with more than one process.
+   */
+  struct CommunicationCounter
+  {
+    std::uint64_t exchanges = 0, values = 0;
+  };
+  CommunicationCounter &communication();
+
+  /** @p v.update_ghost_values(), counted (communication()). */
+  void update_ghosts(const LevelVector &v);
+  /**
+   * @p v.compress(@p operation): the ghost entries to their owners, counted
+   * (communication()). Collective; does nothing with one process.
+   */
+  void send_ghost_parts(LevelVector &v, const VectorOperation::values operation);
+
+  /**
+   * One point-to-point exchange of doubles, counted (communication()):
+   * send every (rank, values) of @p sends, receive into every (rank,
+   * buffer) of @p receives (buffers sized by the caller), and wait for
+   * both. The pairs of processes must agree on the sizes.
+   */
+  void exchange(const MPI_Comm                                                    comm,
+                const int                                                         tag,
+                const std::vector<std::pair<unsigned int, ArrayView<const double>>> &sends,
+                const std::vector<std::pair<unsigned int, ArrayView<double>>> &     receives);
+
+  /** The sum of @p value over the processes of @p comm. */
+  inline double
+  sum(const double value, const MPI_Comm comm)
+  {
+    return Utilities::MPI::sum(value, comm);
+  }
+
+  /**
+   * Copy @p values of the owned DoFs to the ghost copies on the other
+   * processes (entries are small integers stored as doubles: roles, flags).
+   */
+  template <typename T>
+  void
+  exchange_ghosts(const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+                  std::vector<T> &                                          values)
+  {
+    if (partitioner->n_ghost_indices() == 0 &&
+        Utilities::MPI::n_mpi_processes(partitioner->get_mpi_communicator()) == 1)
+      return;
+    LevelVector v;
+    v.reinit(partitioner);
+    const unsigned int n_owned = partitioner->locally_owned_size();
+    for (unsigned int i = 0; i < n_owned; ++i)
+      v.local_element(i) = static_cast<double>(static_cast<unsigned int>(values[i]));
+    v.update_ghost_values();
+    for (unsigned int i = n_owned; i < n_owned + partitioner->n_ghost_indices(); ++i)
+      values[i] = static_cast<T>(static_cast<unsigned int>(v.local_element(i)));
+  }
+
+  /**
+   * The process that owns each of the global @p indices (every process
+   * owns a contiguous range of a level's DoFs, the processes in order).
+   * Collective.
+   */
+  std::vector<unsigned int>
+  owners(const Utilities::MPI::Partitioner &          partitioner,
+         const std::vector<types::global_dof_index> &indices);
+
+  /** The partitioner of @p n DoFs all owned by this process alone. */
+  inline std::shared_ptr<const Utilities::MPI::Partitioner>
+  serial_partitioner(const types::global_dof_index n)
+  {
+    return std::make_shared<const Utilities::MPI::Partitioner>(complete_index_set(n),
+                                                                MPI_COMM_SELF);
+  }
+
+  /** One LevelVector on @p partitioner, zero. */
+  inline LevelVector
+  make_vector(const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner)
+  {
+    LevelVector v;
+    v.reinit(partitioner);
+    return v;
+  }
+} // namespace FoslsContact
+
+#endif

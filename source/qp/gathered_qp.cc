@@ -1,0 +1,119 @@
+#include <deal.II/base/mpi.templates.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <fosls_contact/qp/gathered_qp.h>
+
+namespace FoslsContact
+{
+  namespace
+  {
+    /** The owned rows of @p pattern (and @p matrix's values) in global indices. */
+    std::vector<std::array<double, 3>>
+    owned_entries(const SparsityPattern &                  pattern,
+                  const SparseMatrix<double> *              matrix,
+                  const Utilities::MPI::Partitioner &      partitioner)
+    {
+      std::vector<std::array<double, 3>> entries;
+      for (unsigned int i = 0; i < partitioner.locally_owned_size(); ++i)
+        for (auto e = pattern.begin(i); e != pattern.end(i); ++e)
+          entries.push_back({{double(partitioner.local_to_global(i)),
+                              double(partitioner.local_to_global(e->column())),
+                              matrix ? matrix->el(i, e->column()) : 0.}});
+      return entries;
+    }
+  } // namespace
+
+
+  GatheredQP::GatheredQP(const ConstrainedQP &qp, const bool on_every_process)
+    : comm(qp.get_communicator())
+    , everyone(on_every_process)
+    , holder(on_every_process || Utilities::MPI::this_mpi_process(comm) == 0)
+  {
+    const auto &p = *qp.partitioner;
+    // each process owns a contiguous range, the processes in order
+    for (const auto c : Utilities::MPI::all_gather(comm, int(p.locally_owned_size())))
+      {
+        first.push_back(first.empty() ? 0 : first.back() + count.back());
+        count.push_back(c);
+      }
+    auto collect = [&](const auto &mine) {
+      return everyone ? Utilities::MPI::all_gather(comm, mine) :
+                        Utilities::MPI::gather(comm, mine, 0);
+    };
+    const auto matrix_parts   = collect(owned_entries(qp.matrix.get_sparsity_pattern(), &qp.matrix, p));
+    const auto coupling_parts = collect(owned_entries(*qp.coupling_sparsity, nullptr, p));
+    std::vector<unsigned int> roles;
+    for (unsigned int i = 0; i < p.locally_owned_size(); ++i)
+      roles.push_back(static_cast<unsigned int>(qp.role[i]));
+    const auto role_parts = collect(roles);
+    const LevelVector b = gather(qp.rhs), fixed = gather(qp.fixed_values),
+                      ub = gather(qp.upper_bounds);
+    if (!holder)
+      return;
+
+    const auto n    = p.size();
+    const auto self = serial_partitioner(n);
+    {
+      DynamicSparsityPattern dsp(n, n);
+      for (const auto &part : matrix_parts)
+        for (const auto &[i, j, value] : part)
+          dsp.add(types::global_dof_index(i), types::global_dof_index(j));
+      serial.sparsity.copy_from(dsp);
+      serial.matrix.reinit(serial.sparsity);
+      for (const auto &part : matrix_parts)
+        for (const auto &[i, j, value] : part)
+          serial.matrix.set(types::global_dof_index(i), types::global_dof_index(j), value);
+    }
+    {
+      DynamicSparsityPattern dsp(n, n);
+      for (const auto &part : coupling_parts)
+        for (const auto &[i, j, value] : part)
+          dsp.add(types::global_dof_index(i), types::global_dof_index(j));
+      coupling.copy_from(dsp);
+    }
+    serial.coupling_sparsity = &coupling;
+    serial.partitioner       = self;
+    serial.rhs               = b;
+    serial.fixed_values      = fixed;
+    serial.upper_bounds      = ub;
+    serial.constant          = qp.constant;
+    serial.dimension         = qp.dimension;
+    for (const auto &part : role_parts)
+      for (const auto r : part)
+        serial.role.push_back(static_cast<DoFRole>(r));
+  }
+
+
+  LevelVector
+  GatheredQP::gather(const LevelVector &x) const
+  {
+    const std::vector<double> mine(x.begin(), x.begin() + x.locally_owned_size());
+    const auto all = everyone ? Utilities::MPI::all_gather(comm, mine) :
+                                Utilities::MPI::gather(comm, mine, 0);
+    LevelVector whole;
+    if (!holder)
+      return whole;
+    whole.reinit(serial_partitioner(x.size()));
+    unsigned int k = 0;
+    for (const auto &part : all)
+      for (const double value : part)
+        whole.local_element(k++) = value;
+    return whole;
+  }
+
+
+  void
+  GatheredQP::scatter(const LevelVector &whole, LevelVector &x) const
+  {
+    const int ierr = MPI_Scatterv(Utilities::MPI::this_mpi_process(comm) == 0 ? whole.begin() : nullptr,
+                                  count.data(),
+                                  first.data(),
+                                  MPI_DOUBLE,
+                                  x.begin(),
+                                  x.locally_owned_size(),
+                                  MPI_DOUBLE,
+                                  0,
+                                  comm);
+    AssertThrowMPI(ierr);
+  }
+} // namespace FoslsContact

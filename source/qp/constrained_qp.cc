@@ -90,7 +90,7 @@ namespace FoslsContact
     std::vector<double> root_diagonal(d.locally_owned_size() + partitioner->n_ghost_indices());
     for (unsigned int i = 0; i < root_diagonal.size(); ++i)
       root_diagonal[i] = std::sqrt(std::abs(d.local_element(i)));
-    parallel::apply_to_subranges(
+    for_subranges(
       0u,
       partitioner->locally_owned_size(),
       [&](const unsigned int begin, const unsigned int end) {
@@ -160,9 +160,9 @@ namespace FoslsContact
     std::vector<T>
     sum_over_row_blocks(const unsigned int n, const Function &add_row)
     {
-      const types::global_dof_index block = 4096;
+      const types::global_dof_index block = 512;
       std::vector<T>                partial((n + block - 1) / block, T());
-      parallel::apply_to_subranges(
+      for_subranges(
         types::global_dof_index(0),
         types::global_dof_index(partial.size()),
         [&](const types::global_dof_index begin, const types::global_dof_index end) {

@@ -92,7 +92,17 @@ namespace FoslsContact
     update_ghosts(src);
     LocalElements       out(dst);
     const LocalElements in(src);
-    A.vmult(out, in);
+    if (A.m() > 512)
+      A.vmult(out, in);
+    else
+      // small (coarse levels): without the start-up of the threads
+      for (unsigned int i = 0; i < A.m(); ++i)
+        {
+          double sum = 0;
+          for (auto e = A.begin(i); e != A.end(i); ++e)
+            sum += e->value() * in(e->column());
+          out(i) = sum;
+        }
   }
 
 

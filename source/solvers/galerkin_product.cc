@@ -139,7 +139,7 @@ namespace FoslsContact
     // the values of P in the order of its pattern (global_index)
     const SparsityPattern &P_pattern = P.get_sparsity_pattern();
     P_values.resize(P_pattern.n_nonzero_elements());
-    parallel::apply_to_subranges(
+    for_subranges(
       0u,
       static_cast<unsigned int>(P.m()),
       [&](const unsigned int begin, const unsigned int end) {
@@ -155,7 +155,7 @@ namespace FoslsContact
       std::vector<double>(n_coarse_local, 0.));
 
     // product = A P, by the owned rows of A
-    parallel::apply_to_subranges(
+    for_subranges(
       0u,
       static_cast<unsigned int>(product.m()),
       [&](const unsigned int begin, const unsigned int end) {
@@ -198,7 +198,7 @@ namespace FoslsContact
                                  "coupling pattern of the coarse cells"));
         }
     };
-    parallel::apply_to_subranges(
+    for_subranges(
       0u,
       n_coarse_owned,
       [&](const unsigned int begin, const unsigned int end) {
@@ -215,7 +215,7 @@ namespace FoslsContact
           }
       },
       100);
-    parallel::apply_to_subranges(
+    for_subranges(
       0u,
       static_cast<unsigned int>(ghost_row.size()),
       [&](const unsigned int begin, const unsigned int end) {
@@ -270,7 +270,7 @@ namespace FoslsContact
   void
   GalerkinProduct::Tvmult(LevelVector &dst, const LevelVector &src) const
   {
-    parallel::apply_to_subranges(
+    for_subranges(
       0u,
       n_coarse_local,
       [&](const unsigned int begin, const unsigned int end) {

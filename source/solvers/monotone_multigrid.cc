@@ -135,7 +135,7 @@ namespace FoslsContact
     // and the entries flux rerouting may add; both sorted by column)
     SparseMatrix<double> &      Pt = truncated_prolongation[l];
     const SparseMatrix<double> &P  = hierarchy.prolongation(l);
-    parallel::apply_to_subranges(
+    for_subranges(
       types::global_dof_index(0),
       types::global_dof_index(P.m()),
       [&](const types::global_dof_index begin, const types::global_dof_index end) {
@@ -190,7 +190,7 @@ namespace FoslsContact
                    coarse.partitioner->global_to_local(j),
                    value);
         }
-    parallel::apply_to_subranges(
+    for_subranges(
       types::global_dof_index(0),
       types::global_dof_index(Pt.m()),
       [&](const types::global_dof_index begin, const types::global_dof_index end) {

@@ -3,6 +3,8 @@
 
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
+#include <deal.II/base/parallel.h>
 #include <deal.II/base/partitioner.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/sparse_matrix.h>
@@ -96,6 +98,27 @@ namespace FoslsContact
                 const int                                                         tag,
                 const std::vector<std::pair<unsigned int, ArrayView<const double>>> &sends,
                 const std::vector<std::pair<unsigned int, ArrayView<double>>> &     receives);
+
+  /**
+   * f(begin, end), split into subranges of at least @p grain elements run
+   * by the threads if there is more than one grain and more than one
+   * thread (parallel::apply_to_subranges). deal.II's function always goes
+   * through tbb::parallel_for, whose start-up costs microseconds: the
+   * smoother calls it once per color and sweep on every level of every
+   * cycle, mostly on small ranges on the coarse levels.
+   */
+  template <typename Function>
+  void
+  for_subranges(const unsigned int begin,
+                const unsigned int end,
+                const Function &   f,
+                const unsigned int grain)
+  {
+    if (end - begin <= grain || MultithreadInfo::n_threads() == 1)
+      f(begin, end);
+    else
+      parallel::apply_to_subranges(begin, end, f, grain);
+  }
 
   /** The sum of @p value over the processes of @p comm. */
   inline double

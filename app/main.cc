@@ -9,7 +9,9 @@
  *
  * main() only reads the parameters and hands them to FoslsProblem; every
  * error ends in one line on stderr and exit code 1, before any output file
- * is written.
+ * is written. (On several processes, an error that not all of them meet,
+ * which bad input never is, ends in MPI_Abort: mpirun then adds its own
+ * report, unless started with --quiet, and sets the exit code.)
  *
  * The program runs on every process of MPI_COMM_WORLD (one, or those
  * mpirun starts), each using its share of the machine's cores with

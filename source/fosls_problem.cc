@@ -136,7 +136,7 @@ namespace FoslsContact
     // on the first process, on the gathered problem of that level
     DefinitenessCheck result;
     auto              check = [&](const ConstrainedQP &level_qp) {
-      const GatheredQP gathered(level_qp, false);
+      const GatheredQP gathered(level_qp);
       if (gathered.here())
         result = DefinitenessCheck::run(gathered.qp());
       result.min_relative_eigenvalue =
@@ -200,14 +200,14 @@ namespace FoslsContact
   FoslsProblem<dim>::prolongate_rotated(const unsigned int to_level,
                                         const LevelVector &coarse) const
   {
-    // (a rotation block is the DoFs of one vertex or face: one owner)
+    // (a rotation block is the DoFs of one vertex or face, of one owner:
+    // the product brings the owners' rotated values to the ghost copies;
+    // the owned entries of the result are valid)
     LevelVector cartesian(coarse),
       fine = make_vector(discretization->level(to_level).partitioner);
-    update_ghosts(cartesian);
     discretization->rotate_to_cartesian(to_level - 1, cartesian);
     transfer->prolongate(to_level, fine, cartesian);
     discretization->rotate_to_normal_tangential(to_level, fine);
-    update_ghosts(fine);
     return fine;
   }
 

@@ -96,7 +96,6 @@ namespace FoslsContact
       cell->get_mg_dof_indices(dofs);
       for (auto &dof : dofs)
         dof = partitioner.global_to_local(dof);
-      return dofs;
     };
     for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
       if (is_present(cell))
@@ -267,11 +266,13 @@ namespace FoslsContact
                                       face.area,
                                       face.dofs[0] < n_owned});
       }
-    for (const auto &[vi, p] : contact_vertex_points)
+    // (every local vertex the owner made a contact vertex, also one whose
+    // contact face is in a cell that is not here)
+    for (const auto &[vi, vertex] : data.vertex_dofs)
       {
-        const auto &vertex = data.vertex_dofs.at(vi);
         if (data.role[vertex[0]] != DoFRole::bounded)
           continue;
+        const Point<dim>     p = triangulation.get_vertices()[vi];
         const Tensor<1, dim> n = scene.obstacle_normal(p);
         RotationBlock<dim>   block;
         block.dofs    = vertex;
@@ -295,24 +296,15 @@ namespace FoslsContact
     std::vector<bool> held(n_local, false);
     for (unsigned int i = 0; i < n_owned; ++i)
       held[i] = true;
-    std::set<unsigned int> owned_cell_vertices;
     for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
       if (cell->is_locally_owned_on_level())
         for (const unsigned int v : cell->vertex_indices())
-          owned_cell_vertices.insert(cell->vertex_index(v));
+          data.owned_cell_vertices.insert(cell->vertex_index(v));
     for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
       if (is_present(cell))
         for (const unsigned int v : cell->vertex_indices())
-          if (owned_cell_vertices.count(cell->vertex_index(v)))
-            {
-              for (const auto dof : data.vertex_dofs.at(cell->vertex_index(v)))
-                held[dof] = true;
-              for (const unsigned int f : cell->face_indices())
-                for (unsigned int i = 0; i < GeometryInfo<dim>::vertices_per_face; ++i)
-                  if (GeometryInfo<dim>::face_to_cell_vertices(f, i) == v)
-                    for (const auto dof : data.face_dofs.at(cell->face(f)->index()))
-                      held[dof] = true;
-            }
+          if (data.owned_cell_vertices.count(cell->vertex_index(v)))
+            for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) { held[dof] = true; });
     {
       DynamicSparsityPattern dsp(n_local, n_local);
       for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
@@ -394,7 +386,8 @@ namespace FoslsContact
               active[active_dofs[i]] = level_vector.local_element(
                 level_partitioner.global_to_local(level_dofs[i]));
         }
-    update_ghosts(active);
+    // (kept ghosted: for FEValues and DataOut)
+    active.update_ghost_values();
     return active;
   }
 

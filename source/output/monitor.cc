@@ -30,7 +30,7 @@ namespace FoslsContact
     r.functional = qp.parts(x);
     active_set            = qp.active_set(x);
     active_set_changed_at = 0;
-    r.active    = qp.n_active(x);
+    r.active    = qp.n_active(active_set);
     r.violation = qp.max_violation(x);
     history.push_back(r);
     pcout << "  " << solver_name << ": start  J = " << std::scientific
@@ -49,9 +49,7 @@ namespace FoslsContact
     r.functional   = qp.parts(x);
     r.correction   = qp.energy_norm(d);
     std::vector<bool> active = qp.active_set(x);
-    r.active       = Utilities::MPI::sum(
-      static_cast<unsigned int>(std::count(active.begin(), active.end(), true)),
-      qp.get_communicator());
+    r.active       = qp.n_active(active);
     r.violation    = qp.max_violation(x);
     r.wall_seconds = timer.wall_time();
     const double previous = history.back().correction;

@@ -73,8 +73,9 @@ namespace FoslsContact
   LevelVector
   Postprocessor<dim>::cartesian_active(const LevelVector &x_rotated) const
   {
+    // (a rotation block is the DoFs of one vertex or face, of one owner:
+    // to_active() brings the owners' rotated values to the ghost copies)
     LevelVector x = x_rotated;
-    update_ghosts(x);
     discretization.rotate_to_cartesian(discretization.finest_level(), x);
     return discretization.to_active(x);
   }
@@ -315,7 +316,7 @@ namespace FoslsContact
           std::vector<Tensor<2, dim>>      sigma(quadrature.size());
           const auto &level = discretization.level(discretization.finest_level());
           std::map<unsigned int, bool> active_vertex;
-          update_ghosts(x);
+          // (x's ghost values: from contact_table() above)
           for (const auto &cv : level.contact_vertices)
             active_vertex[cv.vertex_index] =
               x.local_element(cv.normal_dof) >= cv.gap - 1e-12 * std::max(1., std::abs(cv.gap));

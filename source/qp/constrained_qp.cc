@@ -278,12 +278,18 @@ namespace FoslsContact
 
 
   unsigned int
-  ConstrainedQP::n_active(const LevelVector &x) const
+  ConstrainedQP::n_active(const std::vector<bool> &active) const
   {
-    const std::vector<bool> active = active_set(x);
     return Utilities::MPI::sum(
       static_cast<unsigned int>(std::count(active.begin(), active.end(), true)),
       get_communicator());
+  }
+
+
+  unsigned int
+  ConstrainedQP::n_active(const LevelVector &x) const
+  {
+    return n_active(active_set(x));
   }
 
 

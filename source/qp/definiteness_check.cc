@@ -8,6 +8,8 @@ namespace FoslsContact
   DefinitenessCheck
   DefinitenessCheck::run(const ConstrainedQP &qp)
   {
+    AssertThrow(Utilities::MPI::n_mpi_processes(qp.get_communicator()) == 1,
+                ExcMessage("DefinitenessCheck: a problem of one process (GatheredQP)"));
     DefinitenessCheck result;
     const auto &      A = qp.matrix;
     const auto        n = qp.size();

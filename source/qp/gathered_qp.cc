@@ -5,41 +5,35 @@
 
 namespace FoslsContact
 {
-  namespace
+  std::vector<std::array<double, 3>>
+  owned_entries(const SparsityPattern &            pattern,
+                const SparseMatrix<double> *       matrix,
+                const Utilities::MPI::Partitioner &partitioner)
   {
-    /** The owned rows of @p pattern (and @p matrix's values) in global indices. */
-    std::vector<std::array<double, 3>>
-    owned_entries(const SparsityPattern &                  pattern,
-                  const SparseMatrix<double> *              matrix,
-                  const Utilities::MPI::Partitioner &      partitioner)
-    {
-      std::vector<std::array<double, 3>> entries;
-      for (unsigned int i = 0; i < partitioner.locally_owned_size(); ++i)
-        for (auto e = pattern.begin(i); e != pattern.end(i); ++e)
-          entries.push_back({{double(partitioner.local_to_global(i)),
-                              double(partitioner.local_to_global(e->column())),
-                              matrix ? matrix->el(i, e->column()) : 0.}});
-      return entries;
-    }
-  } // namespace
+    std::vector<std::array<double, 3>> entries;
+    for (unsigned int i = 0; i < partitioner.locally_owned_size(); ++i)
+      for (auto e = pattern.begin(i); e != pattern.end(i); ++e)
+        entries.push_back({{double(partitioner.local_to_global(i)),
+                            double(partitioner.local_to_global(e->column())),
+                            matrix ? matrix->el(i, e->column()) : 0.}});
+    return entries;
+  }
 
 
-  GatheredQP::GatheredQP(const ConstrainedQP &qp, const bool on_every_process)
+  GatheredQP::GatheredQP(const ConstrainedQP &qp)
     : comm(qp.get_communicator())
-    , everyone(on_every_process)
-    , holder(on_every_process || Utilities::MPI::this_mpi_process(comm) == 0)
+    , holder(Utilities::MPI::this_mpi_process(comm) == 0)
   {
     const auto &p = *qp.partitioner;
+    if (holder)
+      serial.partitioner = serial_partitioner(p.size());
     // each process owns a contiguous range, the processes in order
     for (const auto c : Utilities::MPI::all_gather(comm, int(p.locally_owned_size())))
       {
         first.push_back(first.empty() ? 0 : first.back() + count.back());
         count.push_back(c);
       }
-    auto collect = [&](const auto &mine) {
-      return everyone ? Utilities::MPI::all_gather(comm, mine) :
-                        Utilities::MPI::gather(comm, mine, 0);
-    };
+    auto collect = [&](const auto &mine) { return Utilities::MPI::gather(comm, mine, 0); };
     const auto matrix_parts   = collect(owned_entries(qp.matrix.get_sparsity_pattern(), &qp.matrix, p));
     const auto coupling_parts = collect(owned_entries(*qp.coupling_sparsity, nullptr, p));
     std::vector<unsigned int> roles;
@@ -51,8 +45,7 @@ namespace FoslsContact
     if (!holder)
       return;
 
-    const auto n    = p.size();
-    const auto self = serial_partitioner(n);
+    const auto n = p.size();
     {
       DynamicSparsityPattern dsp(n, n);
       for (const auto &part : matrix_parts)
@@ -72,7 +65,6 @@ namespace FoslsContact
       coupling.copy_from(dsp);
     }
     serial.coupling_sparsity = &coupling;
-    serial.partitioner       = self;
     serial.rhs               = b;
     serial.fixed_values      = fixed;
     serial.upper_bounds      = ub;
@@ -88,12 +80,11 @@ namespace FoslsContact
   GatheredQP::gather(const LevelVector &x) const
   {
     const std::vector<double> mine(x.begin(), x.begin() + x.locally_owned_size());
-    const auto all = everyone ? Utilities::MPI::all_gather(comm, mine) :
-                                Utilities::MPI::gather(comm, mine, 0);
+    const auto all = Utilities::MPI::gather(comm, mine, 0);
     LevelVector whole;
     if (!holder)
       return whole;
-    whole.reinit(serial_partitioner(x.size()));
+    whole.reinit(serial.partitioner);
     unsigned int k = 0;
     for (const auto &part : all)
       for (const double value : part)

@@ -33,6 +33,7 @@ namespace FoslsContact
     if (Utilities::MPI::n_mpi_processes(p.get_mpi_communicator()) == 1)
       return;
     v.update_ghost_values();
+    v.set_ghost_state(false);
     ++communication().exchanges;
     communication().values += p.n_import_indices();
   }
@@ -87,9 +88,13 @@ namespace FoslsContact
 
 
   void
-  vmult(const SparseMatrix<double> &A, LevelVector &dst, const LevelVector &src)
+  vmult(const SparseMatrix<double> &A,
+        LevelVector &               dst,
+        const LevelVector &         src,
+        const bool                  update_source_ghosts)
   {
-    update_ghosts(src);
+    if (update_source_ghosts)
+      update_ghosts(src);
     LocalElements       out(dst);
     const LocalElements in(src);
     if (A.m() > 512)

@@ -54,9 +54,8 @@ namespace FoslsContact
         for (unsigned int k = 0; k + 1 < list.size(); k += 2)
           {
             AssertThrow(partitioner->in_local_range(list[k]) &&
-                          partitioner->is_ghost_entry(list[k + 1]) +
-                              partitioner->in_local_range(list[k + 1]) >
-                            0,
+                          (partitioner->is_ghost_entry(list[k + 1]) ||
+                           partitioner->in_local_range(list[k + 1])),
                         ExcMessage("MatrixEntryImport: an entry outside the ghost layer"));
             const unsigned int row = partitioner->global_to_local(list[k]);
             const unsigned int col = partitioner->global_to_local(list[k + 1]);

@@ -1,3 +1,4 @@
+#include <fosls_contact/qp/gathered_qp.h>
 #include <fosls_contact/solvers/active_set_direct.h>
 #include <fosls_contact/solvers/box_qp.h>
 #include <fosls_contact/solvers/coarse_obstacles.h>
@@ -33,6 +34,7 @@ namespace FoslsContact
     , truncated_prolongation(finest_level + 1)
     , galerkin_product(finest_level + 1)
     , rerouting_import(finest_level + 1)
+    , rerouting_entries(finest_level + 1)
     , rerouting_values(finest_level + 1)
     , scratch(finest_level + 1)
     , truncation_used(finest_level + 1)
@@ -65,7 +67,13 @@ namespace FoslsContact
         // the plain cycle reroutes flux: it reads the operator between the
         // DoFs inside the coarse cells of its contact faces
         if (parameters.krylov_steps == 0)
-          rerouting_import[l].reinit(rerouting_requests(l), A, fine.partitioner, true);
+          {
+            const auto requests = rerouting_requests(l);
+            rerouting_import[l].reinit(requests, A, fine.partitioner, true);
+            for (const auto &[a, b] : requests)
+              rerouting_entries[l].emplace_back(fine.partitioner->global_to_local(a),
+                                                fine.partitioner->global_to_local(b));
+          }
       }
   }
 
@@ -94,12 +102,9 @@ namespace FoslsContact
   {
     std::vector<double> values;
     rerouting_import[l].import(A, values);
-    const auto &partitioner = *hierarchy.level(l).partitioner;
-    const auto  requests    = rerouting_requests(l);
     rerouting_values[l].clear();
-    for (unsigned int k = 0; k < requests.size(); ++k)
-      rerouting_values[l][{partitioner.global_to_local(requests[k].first),
-                           partitioner.global_to_local(requests[k].second)}] = values[k];
+    for (unsigned int k = 0; k < values.size(); ++k)
+      rerouting_values[l][rerouting_entries[l][k]] = values[k];
   }
 
 
@@ -328,25 +333,6 @@ namespace FoslsContact
     const auto &   partitioner = *v.get_partitioner();
     const MPI_Comm comm        = v.get_mpi_communicator();
     const auto     n_owned     = partitioner.locally_owned_size();
-    // the owned parts of a vector, in the order of the processes: the
-    // whole vector in global order (each owns a contiguous range)
-    const std::vector<int> counts = Utilities::MPI::all_gather(comm, int(n_owned));
-    std::vector<int>       displacements(counts.size(), 0);
-    for (unsigned int p = 1; p < counts.size(); ++p)
-      displacements[p] = displacements[p - 1] + counts[p - 1];
-    auto gather = [&](const LevelVector &x) {
-      std::vector<double> all(partitioner.size());
-      const int           ierr = MPI_Allgatherv(x.begin(),
-                                      n_owned,
-                                      MPI_DOUBLE,
-                                      all.data(),
-                                      counts.data(),
-                                      displacements.data(),
-                                      MPI_DOUBLE,
-                                      comm);
-      AssertThrowMPI(ierr);
-      return all;
-    };
     if (&A != coarse_matrix || version[0] != coarse_version)
       {
         // factorize once per coarse operator: it changes only with the
@@ -355,12 +341,13 @@ namespace FoslsContact
         // coarse solves, 31 ms each when factorized every time)
         coarse_matrix  = &A;
         coarse_version = version[0];
-        std::vector<std::array<double, 3>> mine;
-        for (unsigned int i = 0; i < n_owned; ++i)
-          for (auto e = A.begin(i); e != A.end(i); ++e)
-            mine.push_back({{double(partitioner.local_to_global(i)),
-                             double(partitioner.local_to_global(e->column())),
-                             e->value()}});
+        // the owned part of each process: the whole vector in global order
+        // (each owns a contiguous range, the processes in order)
+        coarse_counts = Utilities::MPI::all_gather(comm, int(n_owned));
+        coarse_displacements.assign(coarse_counts.size(), 0);
+        for (unsigned int p = 1; p < coarse_counts.size(); ++p)
+          coarse_displacements[p] = coarse_displacements[p - 1] + coarse_counts[p - 1];
+        const auto mine = owned_entries(A.get_sparsity_pattern(), &A, partitioner);
         std::vector<unsigned int> my_roles;
         for (unsigned int i = 0; i < n_owned; ++i)
           my_roles.push_back(static_cast<unsigned int>(role[i]));
@@ -405,6 +392,19 @@ namespace FoslsContact
     const unsigned int n    = dofs.size();
     if (n == 0)
       return;
+    auto gather = [&](const LevelVector &x) {
+      std::vector<double> all(partitioner.size());
+      const int           ierr = MPI_Allgatherv(x.begin(),
+                                      n_owned,
+                                      MPI_DOUBLE,
+                                      all.data(),
+                                      coarse_counts.data(),
+                                      coarse_displacements.data(),
+                                      MPI_DOUBLE,
+                                      comm);
+      AssertThrowMPI(ierr);
+      return all;
+    };
     const std::vector<double> r_all = gather(r), ub_all = gather(ub);
     std::vector<double>       v_all = gather(v);
     if (n <= 2000)
@@ -499,6 +499,7 @@ namespace FoslsContact
       {
         // (the same on every process: the diagonal has ghost values)
         work.diagonal         = diagonal(A, fine.partitioner);
+        update_ghosts(work.diagonal); // (an assignment copies the owned entries only)
         work.diagonal_version = operator_version(l, A);
       }
     if (work.operator_version != operator_version(l, A) || work.role != role)
@@ -535,9 +536,11 @@ namespace FoslsContact
       {
         // Truncation (eq. 34): fixed, active and switched-off DoFs do not
         // move; their defect obstacle is +inf (eqs. 35-36). On the ghost
-        // DoFs too, from their owners' values: the same decision.
-        update_ghosts(v);
-        update_ghosts(ub);
+        // DoFs too, from their owners' values: the same decision. (The
+        // ghost values of v and ub are valid after the smoothing above; v
+        // changes in a visit.)
+        if (visit > 0)
+          update_ghosts(v);
         truncated = work.fixed_truncated;
         for (const auto i : work.bounded)
           {
@@ -548,7 +551,7 @@ namespace FoslsContact
         update_coarse_operator(l, A, role, truncated, !linear);
         const auto &P = truncated_prolongation[l];
 
-        vmult(A, residual, v);
+        vmult(A, residual, v, false);
         residual.sadd(-1., 1., r);
         galerkin_product[l].Tvmult(r_coarse, residual);
         CoarseObstacles::project(
@@ -556,7 +559,8 @@ namespace FoslsContact
         c = 0;
         cycle(l - 1, galerkin[l - 1], r_coarse, ub_coarse, coarse.role, c, linear);
 
-        vmult(P, w, c);
+        // (c's ghost values are valid after the coarse cycle)
+        vmult(P, w, c, false);
         // keep the iterate feasible (a no-op when K_H is inside K_h)
         double alpha = 1.;
         for (const auto i : work.bounded)
@@ -575,7 +579,7 @@ namespace FoslsContact
         // w = P~ c: w.residual = c.r_coarse and w.A w = c.A_{l-1} c (the
         // Galerkin product), on the coarse level instead of a product with
         // the fine matrix
-        vmult(galerkin[l - 1], Ac, c);
+        vmult(galerkin[l - 1], Ac, c, false);
         const double wr = c * r_coarse, wAw = c * Ac;
         const double change = -alpha * wr + 0.5 * alpha * alpha * wAw;
         if (change > 1e-10 * (std::abs(alpha * wr) + 0.5 * alpha * alpha * std::abs(wAw)) + 1e-300)
@@ -660,10 +664,9 @@ namespace FoslsContact
     // left free, so that the Newton direction can release it.
     LevelVector residual = qp.new_vector(), d = qp.new_vector(), increment = qp.new_vector(),
                 rhs = qp.new_vector(), Ae = qp.new_vector();
-    vmult(A, residual, x);
+    vmult(A, residual, x, false); // (x's ghosts: after the smoothing)
     residual.sadd(-1., 1., qp.rhs);
     update_ghosts(residual);
-    update_ghosts(x);
     linear_role = qp.role;
     for (unsigned int i = 0; i < n_local; ++i)
       if (qp.role[i] == DoFRole::bounded)

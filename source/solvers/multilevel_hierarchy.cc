@@ -241,16 +241,12 @@ namespace FoslsContact
 
     // Vertex patches in the order of their VertexKey, and their colors. A
     // process relaxes the patches with a DoF it owns; their vertices are
-    // vertices of its own cells, whose cells are all here.
+    // vertices of its own cells, whose cells are all here. (Level 0 is
+    // solved directly: no patches.)
     const auto &dof_handler = discretization.get_dof_handler();
-    for (unsigned int l = 0; l < n; ++l)
+    for (unsigned int l = 1; l < n; ++l)
       {
         const auto &data = discretization.level(l);
-        std::set<unsigned int> owned_cell_vertices;
-        for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
-          if (cell->is_locally_owned_on_level())
-            for (const unsigned int v : cell->vertex_indices())
-              owned_cell_vertices.insert(cell->vertex_index(v));
 
         std::map<unsigned int, VertexKey<dim>>                     key;
         std::map<unsigned int, std::set<types::global_dof_index>> patch;
@@ -261,16 +257,10 @@ namespace FoslsContact
                 const unsigned int vertex = cell->vertex_index(v);
                 if (key.count(vertex) == 0)
                   key[vertex] = vertex_key<dim>(cell, v);
-                if (owned_cell_vertices.count(vertex) == 0)
+                if (data.owned_cell_vertices.count(vertex) == 0)
                   continue;
                 auto &p = patch[vertex];
-                for (const auto dof : data.vertex_dofs.at(vertex))
-                  p.insert(dof);
-                for (const unsigned int f : cell->face_indices())
-                  for (unsigned int i = 0; i < GeometryInfo<dim>::vertices_per_face; ++i)
-                    if (GeometryInfo<dim>::face_to_cell_vertices(f, i) == v)
-                      for (const auto dof : data.face_dofs.at(cell->face(f)->index()))
-                        p.insert(dof);
+                for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) { p.insert(dof); });
               }
 
         // every vertex of a cell here is an item of the level scheduling

@@ -42,8 +42,9 @@ namespace FoslsContact
     level.color_start.push_back(0);
     // the nonzeros of a row in the global order of their columns, so that
     // every process that relaxes a patch sums in the same order
-    auto sorted_row = [&](const types::global_dof_index row) {
-      std::vector<std::pair<types::global_dof_index, double>> entries;
+    std::vector<std::pair<types::global_dof_index, double>> entries;
+    auto sorted_row = [&](const types::global_dof_index row) -> const auto & {
+      entries.clear();
       for (auto e = matrix.begin(row); e != matrix.end(row); ++e)
         if (e->value() != 0.)
           entries.emplace_back(e->column(), e->value());
@@ -93,6 +94,7 @@ namespace FoslsContact
                         level.neighbors.push_back(e.first);
                       }
                     level.columns.push_back(local[e.first]);
+                    level.values.push_back(e.second);
                   }
                 level.row_start.push_back(level.columns.size());
               }
@@ -115,33 +117,26 @@ namespace FoslsContact
             patch_of[dof] = numbers::invalid_unsigned_int;
       }
 
-    // Values (in parallel, patch by patch): the inverse of the patch
-    // matrix (its upper triangle), a BoxQP for patches with a bounded DoF,
-    // and the rows' values in the order of their columns above.
+    // The inverses (in parallel, patch by patch) of the patch matrices
+    // (their upper triangles), and a BoxQP for patches with a bounded DoF.
     level.inverse.resize(level.inverse_start.back());
-    level.values.resize(level.columns.size());
     level.qps.resize(n_qps);
-    parallel::apply_to_subranges(
+    for_subranges(
       0u,
       static_cast<unsigned int>(level.box_qp.size()),
       [&](const unsigned int begin, const unsigned int end) {
         for (unsigned int k = begin; k < end; ++k)
           {
-            const auto *       dofs = level.neighbors.data() + level.neighbor_start[k];
             const unsigned int n    = level.start[k + 1] - level.start[k];
-            // the rows, and from them the patch matrix: the patch DoFs are
-            // the first n positions of the neighbourhood
+            // the patch matrix from the rows: the patch DoFs are the first
+            // n positions of the neighbourhood
             FullMatrix<double> M(n, n);
             for (unsigned int a = 0; a < n; ++a)
-              {
-                std::size_t j = level.row_start[level.start[k] + a];
-                for (const auto &e : sorted_row(dofs[a]))
-                  {
-                    if (level.columns[j] < n)
-                      M(a, level.columns[j]) = e.second;
-                    level.values[j++] = e.second;
-                  }
-              }
+              for (std::size_t j = level.row_start[level.start[k] + a];
+                   j < level.row_start[level.start[k] + a + 1];
+                   ++j)
+                if (level.columns[j] < n)
+                  M(a, level.columns[j]) = level.values[j];
             BoxQP   qp(M);
             double *inverse = level.inverse.data() + level.inverse_start[k];
             for (unsigned int a = 0; a < n; ++a)
@@ -317,7 +312,7 @@ namespace FoslsContact
           const unsigned int color = backward ? n_colors - 1 - cc : cc;
           // the patches of one color are independent: any split among
           // threads gives the same result
-          parallel::apply_to_subranges(
+          for_subranges(
             level.color_start[color],
             level.color_start[color + 1],
             [&](const unsigned int begin, const unsigned int end) {

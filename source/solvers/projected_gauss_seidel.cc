@@ -14,7 +14,7 @@ namespace FoslsContact
     // The sweep is sequential in the global order of the DoFs: it runs on
     // the first process, on the gathered problem (the baseline, meant for
     // one process).
-    const GatheredQP gathered(distributed, false);
+    const GatheredQP gathered(distributed);
     LevelVector      whole = gathered.gather(x), x_old(x);
     const MPI_Comm   comm  = distributed.get_communicator();
     for (;;)
@@ -50,7 +50,8 @@ namespace FoslsContact
               }
           }
         gathered.scatter(whole, x);
-        for (unsigned int k = 0; k < Utilities::MPI::sum(increases, comm); ++k)
+        const unsigned int all_increases = Utilities::MPI::sum(increases, comm);
+        for (unsigned int k = 0; k < all_increases; ++k)
           monitor.note_energy_increase();
         if (monitor.report(x, x_old))
           break;

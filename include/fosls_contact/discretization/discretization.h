@@ -15,6 +15,7 @@
 #include <fosls_contact/scene/scene.h>
 
 #include <map>
+#include <set>
 
 namespace FoslsContact
 {
@@ -102,10 +103,19 @@ namespace FoslsContact
     /** The contact vertices and faces of the cells of this process. */
     std::vector<ContactVertex<dim>>         contact_vertices;
     std::vector<ContactFace<dim>>           contact_faces;
-    /** vertex index -> its displacement DoFs (component by component). */
+    /**
+     * vertex index -> its displacement DoFs (component by component), for
+     * the vertices of the cells here; local indices.
+     */
     std::map<unsigned int, std::array<types::global_dof_index, dim>> vertex_dofs;
-    /** face index -> its RT DoFs (stress row by row). */
+    /** face index -> its RT DoFs (stress row by row); local indices. */
     std::map<unsigned int, std::array<types::global_dof_index, dim>> face_dofs;
+    /**
+     * The vertices of the cells this process owns on the level: it relaxes
+     * the patches there that have a DoF it owns, and all cells at them are
+     * here.
+     */
+    std::set<unsigned int> owned_cell_vertices;
     /**
      * The coupling pattern of the level's cells, in local indices, for the
      * rows this process holds: its own DoFs, and the ghost DoFs of the
@@ -118,6 +128,29 @@ namespace FoslsContact
     /** The ghost rows of `sparsity`, copied from their owners. */
     MatrixEntryImport                       ghost_rows;
   };
+
+  /**
+   * Call @p f(dof) for the DoFs of the Arnold-Falk-Winther patch of vertex
+   * @p v of @p cell that lie in this cell: the vertex's displacement DoFs
+   * and the RT DoFs (all stress rows) of the cell's faces at the vertex.
+   * The patch is the union over the cells at the vertex.
+   */
+  template <int dim, typename Iterator, typename Function>
+  void
+  for_patch_dofs_in_cell(const LevelData<dim> &level,
+                         const Iterator &      cell,
+                         const unsigned int    v,
+                         const Function &      f)
+  {
+    for (const auto dof : level.vertex_dofs.at(cell->vertex_index(v)))
+      f(dof);
+    for (const unsigned int face : cell->face_indices())
+      for (unsigned int i = 0; i < GeometryInfo<dim>::vertices_per_face; ++i)
+        if (GeometryInfo<dim>::face_to_cell_vertices(face, i) == v)
+          for (const auto dof : level.face_dofs.at(cell->face(face)->index()))
+            f(dof);
+  }
+
 
   /**
    * The discretization of paper section 4.1: the FESystem

@@ -151,8 +151,10 @@ namespace FoslsContact
     double max_violation(const LevelVector &x) const;
     /** Which owned DoFs are bounded and at their bound. */
     std::vector<bool> active_set(const LevelVector &x) const;
-    /** Number of bounded DoFs at their bound. */
+    /** Number of bounded DoFs at their bound (all processes). */
     unsigned int n_active(const LevelVector &x) const;
+    /** The size of an active set of active_set(), over all processes. */
+    unsigned int n_active(const std::vector<bool> &active) const;
     /** KKT residuals at x. */
     KKTResidual kkt_residual(const LevelVector &x) const;
     /**

@@ -3,11 +3,22 @@
 
 #include <fosls_contact/qp/constrained_qp.h>
 
+#include <array>
+
 namespace FoslsContact
 {
   /**
-   * A ConstrainedQP gathered in global numbering on the first process (or
-   * on every process), as a problem of that process alone (MPI_COMM_SELF):
+   * The entries of the owned rows of @p pattern (with the values of
+   * @p matrix if given, else 0) in global indices: (row, column, value).
+   */
+  std::vector<std::array<double, 3>>
+  owned_entries(const SparsityPattern &            pattern,
+                const SparseMatrix<double> *       matrix,
+                const Utilities::MPI::Partitioner &partitioner);
+
+  /**
+   * A ConstrainedQP gathered in global numbering on the first process, as
+   * a problem of that process alone (MPI_COMM_SELF):
    * for what works on the whole matrix at once and is meant for one
    * process, the definiteness check (a small level) and projected
    * Gauss-Seidel (the serial baseline, which sweeps the DoFs in their
@@ -18,16 +29,16 @@ namespace FoslsContact
   {
   public:
     /** Collective. */
-    GatheredQP(const ConstrainedQP &distributed, const bool on_every_process);
+    explicit GatheredQP(const ConstrainedQP &distributed);
 
-    /** Whether this process holds the gathered problem. */
+    /** Whether this process holds the gathered problem (the first). */
     bool here() const { return holder; }
     /** The gathered problem (on the holders). */
     const ConstrainedQP &qp() const { return serial; }
 
     /**
      * The owned entries of @p x of all processes, in global order, as a
-     * vector of the gathered problem (on the holders). Collective.
+     * vector of the gathered problem (on the first process). Collective.
      */
     LevelVector gather(const LevelVector &x) const;
     /**
@@ -39,7 +50,7 @@ namespace FoslsContact
 
   private:
     MPI_Comm                  comm;
-    bool                      everyone, holder;
+    bool                      holder;
     /** The first global index and the number of owned DoFs per process. */
     std::vector<int>          first, count;
     SparsityPattern           coupling;

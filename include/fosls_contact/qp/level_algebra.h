@@ -59,10 +59,14 @@ namespace FoslsContact
   /**
    * dst = A src for a local matrix @p A (rows and columns in local indices;
    * the owned rows are complete, ghost rows are complete or empty). The
-   * ghost values of @p src are updated first; the owned entries of @p dst
-   * are the product, its ghost entries are not valid afterwards.
+   * ghost values of @p src are updated first (unless the caller knows them
+   * to be valid); the owned entries of @p dst are the product, its ghost
+   * entries are not valid afterwards.
    */
-  void vmult(const SparseMatrix<double> &A, LevelVector &dst, const LevelVector &src);
+  void vmult(const SparseMatrix<double> &A,
+             LevelVector &               dst,
+             const LevelVector &         src,
+             const bool                  update_source_ghosts = true);
 
   /** x^T A x over the owned rows, summed over the processes. */
   double matrix_norm_square(const SparseMatrix<double> &A, const LevelVector &x);
@@ -80,7 +84,15 @@ namespace FoslsContact
   };
   CommunicationCounter &communication();
 
-  /** @p v.update_ghost_values(), counted (communication()). */
+  /**
+   * @p v.update_ghost_values(), counted (communication()). The vector is
+   * then marked as not ghosted: deal.II repeats the exchange after every
+   * later operation (=, add, sadd, ...) on a ghosted vector, silently. Its
+   * ghost entries stay valid until the owned entries change, and every
+   * read of them in this program comes after an update. (A copy, by = or
+   * the copy constructor, has zero ghost entries.) (A vector handed
+   * to FEValues or DataOut is updated with update_ghost_values() itself.)
+   */
   void update_ghosts(const LevelVector &v);
   /**
    * @p v.compress(@p operation): the ghost entries to their owners, counted
@@ -120,13 +132,6 @@ namespace FoslsContact
       parallel::apply_to_subranges(begin, end, f, grain);
   }
 
-  /** The sum of @p value over the processes of @p comm. */
-  inline double
-  sum(const double value, const MPI_Comm comm)
-  {
-    return Utilities::MPI::sum(value, comm);
-  }
-
   /**
    * Copy @p values of the owned DoFs to the ghost copies on the other
    * processes (entries are small integers stored as doubles: roles, flags).
@@ -136,15 +141,12 @@ namespace FoslsContact
   exchange_ghosts(const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
                   std::vector<T> &                                          values)
   {
-    if (partitioner->n_ghost_indices() == 0 &&
-        Utilities::MPI::n_mpi_processes(partitioner->get_mpi_communicator()) == 1)
-      return;
     LevelVector v;
     v.reinit(partitioner);
     const unsigned int n_owned = partitioner->locally_owned_size();
     for (unsigned int i = 0; i < n_owned; ++i)
       v.local_element(i) = static_cast<double>(static_cast<unsigned int>(values[i]));
-    v.update_ghost_values();
+    update_ghosts(v);
     for (unsigned int i = n_owned; i < n_owned + partitioner->n_ghost_indices(); ++i)
       values[i] = static_cast<T>(static_cast<unsigned int>(v.local_element(i)));
   }

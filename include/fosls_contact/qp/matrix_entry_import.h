@@ -56,8 +56,6 @@ namespace FoslsContact
      */
     void import_into(SparseMatrix<double> &matrix) const;
 
-    unsigned int n_requests() const { return requests_local.size(); }
-
   private:
     MPI_Comm comm = MPI_COMM_SELF;
     /** The requests in local indices (row, column). */

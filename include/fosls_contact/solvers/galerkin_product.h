@@ -24,10 +24,10 @@ namespace FoslsContact
    * rows of the result, i.e. by columns of P~ (over the owned rows of P~),
    * for which the pattern of P~ is transposed once in initialize(). A
    * coarse row this process does not own gets only part of its sum here;
-   * the parts go to the row's owner, which adds them in the order of the
-   * processes. Every entry is thus summed in a fixed order: the result
-   * does not depend on the number of threads (with several processes, the
-   * partition fixes the order of the parts).
+   * the parts go to the row's owner, which adds them to its own part in
+   * the order of the sending processes. Every entry is thus summed in a
+   * fixed order: the result does not depend on the number of threads
+   * (with several processes, the partition fixes the order of the parts).
    *
    * The coarse operator is stored on the coupling pattern of the coarse
    * level's cells (LevelData::sparsity): a coarse basis function

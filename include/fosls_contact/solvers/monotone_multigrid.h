@@ -86,8 +86,8 @@ namespace FoslsContact
 
     /**
      * The number of patch colors of levels 1..finest (MultilevelHierarchy::
-     * patch_colors()): the barriers of the threads, and later the ghost
-     * exchanges, of one smoothing step per level.
+     * patch_colors()): the barriers of the threads and the ghost
+     * exchanges of one smoothing step per level.
      */
     std::vector<unsigned int> n_patch_colors() const;
 
@@ -170,7 +170,10 @@ namespace FoslsContact
      * sorted): the requests of rerouting_import[l].
      */
     std::vector<MatrixEntryImport::Entry> rerouting_requests(const unsigned int l) const;
-    /** Import them from the operator @p A of level @p l (collective). */
+    /**
+     * Import the entries of rerouting_requests(l) from the operator @p A
+     * of level @p l into rerouting_values[l] (collective).
+     */
     void import_rerouting_values(const unsigned int l, const SparseMatrix<double> &A);
 
     /** Work vectors of the cycle on one level (l: fine, l - 1: coarse). */
@@ -184,7 +187,13 @@ namespace FoslsContact
       std::vector<bool> fixed_truncated;
       /** The local bounded DoFs that are not fixed_truncated. */
       std::vector<types::global_dof_index> bounded;
-      /** The diagonal of the operator (with ghost values), and its version. */
+      /**
+       * The diagonal of the operator (with ghost values), and the operator
+       * it belongs to: recomputed when the operator changes, which every
+       * process sees at once (the update is collective), while the roles,
+       * which decide fixed_truncated too, can change on some processes
+       * only.
+       */
       LevelVector                           diagonal;
       std::pair<const void *, unsigned int> diagonal_version{nullptr, 0};
       /** The operator and roles fixed_truncated was computed for. */
@@ -222,6 +231,9 @@ namespace FoslsContact
      * the last operator).
      */
     std::vector<MatrixEntryImport>                     rerouting_import;
+    /** (local row, local column) of the requests of each level */
+    std::vector<std::vector<std::pair<types::global_dof_index, types::global_dof_index>>>
+                                                       rerouting_entries;
     std::vector<std::map<std::pair<types::global_dof_index, types::global_dof_index>, double>>
                                                        rerouting_values;
     std::vector<Scratch>                               scratch;
@@ -237,6 +249,8 @@ namespace FoslsContact
     SparsityPattern                                    coarse_sparsity_global;
     SparseMatrix<double>                               coarse_matrix_global;
     std::vector<DoFRole>                               coarse_role_global;
+    /** The number of owned coarsest DoFs per process, and their offsets. */
+    std::vector<int>                                   coarse_counts, coarse_displacements;
     const SparseMatrix<double> *                       coarse_matrix  = nullptr;
     unsigned int                                       coarse_version = numbers::invalid_unsigned_int;
     TimerOutput *                                      timer   = nullptr;

@@ -154,6 +154,15 @@ namespace FoslsContact
     Threads::ThreadLocalStorage<std::vector<double>> dense_row(
       std::vector<double>(n_coarse_local, 0.));
 
+    // the dense row into row r of M, leaving it zero
+    auto take_row = [](SparseMatrix<double> &M, const unsigned int r, std::vector<double> &row) {
+      for (auto e = M.begin(r); e != M.end(r); ++e)
+        {
+          e->value()       = row[e->column()];
+          row[e->column()] = 0.;
+        }
+    };
+
     // product = A P, by the owned rows of A
     for_subranges(
       0u,
@@ -166,11 +175,7 @@ namespace FoslsContact
               if (a->value() != 0.)
                 for (auto p = P.begin(a->column()); p != P.end(a->column()); ++p)
                   row[p->column()] += a->value() * P_values[p->global_index()];
-            for (auto e = product.begin(r); e != product.end(r); ++e)
-              {
-                e->value()       = row[e->column()];
-                row[e->column()] = 0.;
-              }
+            take_row(product, r, row);
           }
       },
       200);
@@ -206,11 +211,7 @@ namespace FoslsContact
         for (unsigned int j = begin; j < end; ++j)
           {
             row_of_result(j, row);
-            for (auto e = galerkin.begin(j); e != galerkin.end(j); ++e)
-              {
-                e->value()       = row[e->column()];
-                row[e->column()] = 0.;
-              }
+            take_row(galerkin, j, row);
             check_rest(j, row);
           }
       },

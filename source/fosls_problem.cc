@@ -203,8 +203,7 @@ namespace FoslsContact
     // (a rotation block is the DoFs of one vertex or face, of one owner:
     // the product brings the owners' rotated values to the ghost copies;
     // the owned entries of the result are valid)
-    LevelVector cartesian(coarse),
-      fine = make_vector(discretization->level(to_level).partitioner);
+    LevelVector cartesian(coarse), fine(discretization->level(to_level).partitioner);
     discretization->rotate_to_cartesian(to_level - 1, cartesian);
     transfer->prolongate(to_level, fine, cartesian);
     discretization->rotate_to_normal_tangential(to_level, fine);

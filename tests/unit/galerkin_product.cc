@@ -258,7 +258,7 @@ main(int argc, char *argv[])
   // the colored sweep against a sequential one, forward and backward
   const auto           partitioner = serial_partitioner(n);
   std::vector<DoFRole> role(n, DoFRole::free);
-  LevelVector          r = make_vector(partitioner), ub = make_vector(partitioner);
+  LevelVector          r(partitioner), ub(partitioner);
   for (unsigned int i = 0; i < n; ++i)
     r.local_element(i) = std::sin(1. + i);
   ub = 1e300;
@@ -273,7 +273,7 @@ main(int argc, char *argv[])
           smoother.set_obstacles(0, ub);
           smoother.set_backward(backward);
           smoother.set_steps(2);
-          LevelVector v = make_vector(partitioner);
+          LevelVector v(partitioner);
           smoother.smooth(0, v, r);
           if (threads == 1)
             colored = to_vector(v);

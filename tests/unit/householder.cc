@@ -203,7 +203,7 @@ test_tilted_scene(const std::string &                              file,
                   }
 
               // rotated: (t.n_o, t.(H e_2), ...)
-              LevelVector x = make_vector(data.partitioner);
+              LevelVector x(data.partitioner);
               for (unsigned int m = 0; m < dim; ++m)
                 x.local_element(face_rt[m]) = local_values[local[m]];
               discretization.rotate_to_normal_tangential(l, x);
@@ -256,7 +256,7 @@ test_tilted_scene(const std::string &                              file,
           Tensor<1, dim> u;
           for (unsigned int k = 0; k < dim; ++k)
             u[k] = 0.01 * (k + 1);
-          LevelVector x = make_vector(data.partitioner);
+          LevelVector x(data.partitioner);
           for (unsigned int k = 0; k < dim; ++k)
             x.local_element(block.dofs[k]) = u[k];
           discretization.rotate_to_normal_tangential(l, x);
@@ -272,7 +272,7 @@ test_tilted_scene(const std::string &                              file,
 
       // round trip
       Random      random(l + 1);
-      LevelVector x = make_vector(data.partitioner), y = make_vector(data.partitioner);
+      LevelVector x(data.partitioner), y(data.partitioner);
       for (auto &v : x)
         v = random();
       y = x;

@@ -90,8 +90,8 @@ test(const std::string &                                     title,
       const auto &      coarse = discretization.level(l - 1);
       const auto &      fine   = discretization.level(l);
       // x and P x as LevelVectors, and as serial vectors for the reference
-      LevelVector    src_level = make_vector(coarse.partitioner);
-      LevelVector    dst_level = make_vector(fine.partitioner);
+      LevelVector    src_level(coarse.partitioner);
+      LevelVector    dst_level(fine.partitioner);
       Vector<double> src(coarse.n_dofs), dst(fine.n_dofs), dst_ref(fine.n_dofs);
       std::cout << step << ": " << coarse.n_dofs << " -> " << fine.n_dofs
                 << " DoFs, " << transfer.prolongation(l).n_nonzero_elements()
@@ -179,7 +179,7 @@ test(const std::string &                                     title,
           for (const auto &[v, dofs] : coarse.vertex_dofs)
             src_level.local_element(dofs[k]) = 1.;
           transfer.prolongate(l, dst_level, src_level);
-          LevelVector expected = make_vector(fine.partitioner);
+          LevelVector expected(fine.partitioner);
           for (const auto &[v, dofs] : fine.vertex_dofs)
             expected.local_element(dofs[k]) = 1.;
           expected -= dst_level;

@@ -129,7 +129,7 @@ namespace FoslsContact
     unsigned int n_owned() const { return partitioner->locally_owned_size(); }
     MPI_Comm get_communicator() const { return partitioner->get_mpi_communicator(); }
     /** A zero vector of the level. */
-    LevelVector new_vector() const { return make_vector(partitioner); }
+    LevelVector new_vector() const { return LevelVector(partitioner); }
 
     /**
      * After the owned rows were assembled: drop A's round-off entries

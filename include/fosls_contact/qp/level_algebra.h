@@ -89,9 +89,9 @@ namespace FoslsContact
    * then marked as not ghosted: deal.II repeats the exchange after every
    * later operation (=, add, sadd, ...) on a ghosted vector, silently. Its
    * ghost entries stay valid until the owned entries change, and every
-   * read of them in this program comes after an update. (A copy, by = or
-   * the copy constructor, has zero ghost entries.) (A vector handed
-   * to FEValues or DataOut is updated with update_ghost_values() itself.)
+   * read of them in this program comes after an update. A copy, by = or
+   * the copy constructor, has zero ghost entries; a vector handed to
+   * FEValues or DataOut is updated with update_ghost_values() itself.
    */
   void update_ghosts(const LevelVector &v);
   /**
@@ -141,8 +141,7 @@ namespace FoslsContact
   exchange_ghosts(const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
                   std::vector<T> &                                          values)
   {
-    LevelVector v;
-    v.reinit(partitioner);
+    LevelVector        v(partitioner);
     const unsigned int n_owned = partitioner->locally_owned_size();
     for (unsigned int i = 0; i < n_owned; ++i)
       v.local_element(i) = static_cast<double>(static_cast<unsigned int>(values[i]));
@@ -166,15 +165,6 @@ namespace FoslsContact
   {
     return std::make_shared<const Utilities::MPI::Partitioner>(complete_index_set(n),
                                                                 MPI_COMM_SELF);
-  }
-
-  /** One LevelVector on @p partitioner, zero. */
-  inline LevelVector
-  make_vector(const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner)
-  {
-    LevelVector v;
-    v.reinit(partitioner);
-    return v;
   }
 } // namespace FoslsContact
 

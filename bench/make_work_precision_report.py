@@ -534,7 +534,7 @@ PH = [("setup", lambda r: r["t_setup"]), ("assembly", lambda r: r["t_assembly"])
       ("smoothing", lambda r: r["t_smoothing"]), ("coarse solve", lambda r: r["t_coarse"]),
       ("solve, rest", lambda r: r["t_solve"] - r["t_galerkin"] - r["t_smoothing"] - r["t_coarse"]),
       ("output + process", lambda r: r["t_output"])]
-md.append("From `time_sections_s` of summary.json (TimerOutput wall seconds). 'setup' = "
+md.append("From `time_sections_s` of summary.json (wall seconds: TimerOutput sections, and the three `Solve: ...` parts timed by the solver itself). 'setup' = "
           "mesh, DoFs and levels plus the solver's set-up (multigrid hierarchy, patches, "
           "sparsity patterns of the Galerkin products). The three "
           "`Solve: ...` sections lie inside `Solve`; 'solve, rest' is `Solve` minus them (CG "

@@ -113,6 +113,13 @@ SQUARE_CONFIGS = {
     "default2p": ({"Solver/Threads": "1"}, 6.0),
 }
 PROCESSES = {"default2p": 2}
+# The time per cycle per DoF (doc/results.md f) is taken from the fastest of
+# TIMING_RUNS runs of these configurations on levels 5..9: single runs on
+# this (virtual) machine scattered by up to 30% (level 7: 0.32 to 0.41 us per
+# cycle per DoF in three runs of one binary). The iterates of the runs are
+# identical; runs.csv notes every run's solve time.
+TIMED_CONFIGS = {"default", "default1t", "default2p"}
+TIMING_RUNS = 3
 
 
 def square(config, lam, level, prev=None):
@@ -132,7 +139,31 @@ def square(config, lam, level, prev=None):
     s = dict(sets)
     s.update({"Geometry/Levels": str(level), "Material/lambda": lam,
               "Solver/Tolerance": "1e-8"})
-    return run(case, "square.prm", s, meta, processes=PROCESSES.get(config, 1))
+    if config not in TIMED_CONFIGS or level < 5:
+        return run(case, "square.prm", s, meta, processes=PROCESSES.get(config, 1))
+    # the fastest of TIMING_RUNS runs, with its output directory as the case's
+    best, solves = None, []
+    for k in range(TIMING_RUNS):
+        r = run(f"{case}_run{k + 1}", "square.prm", s, meta,
+                processes=PROCESSES.get(config, 1), record=False)
+        if r["status"] != "ok":
+            best = r
+            break
+        solves.append(f"{float(r['time_solve_s']):.3f}")
+        if best is None or float(r["time_solve_s"]) < float(best["time_solve_s"]):
+            best = r
+    out = os.path.join(RES, case)
+    shutil.rmtree(out, ignore_errors=True)
+    if os.path.isdir(os.path.join(RES, best["case"])):
+        os.rename(os.path.join(RES, best["case"]), out)
+    for k in range(TIMING_RUNS):
+        shutil.rmtree(os.path.join(RES, f"{case}_run{k + 1}"), ignore_errors=True)
+    best["case"] = case
+    if best["status"] == "ok":
+        best["note"] = f"fastest of {len(solves)} runs (solve s: {', '.join(solves)})"
+    rows.append(best)
+    write_rows()
+    return best
 
 
 def h_ratio(grading):

@@ -185,11 +185,8 @@ namespace FoslsContact
           return std::make_unique<ProjectedGaussSeidel>();
         default:
           {
-            auto solver = std::make_unique<MonotoneMultigrid<dim>>(
+            return std::make_unique<MonotoneMultigrid<dim>>(
               *discretization, *transfer, level, level_qp.sparsity, parameters.solver);
-            if (level == discretization->finest_level())
-              solver->set_timer(timer);
-            return solver;
           }
       }
   }
@@ -416,10 +413,13 @@ namespace FoslsContact
     }
     {
       // wall seconds of every TimerOutput section finished so far (the
-      // output section itself is still running)
+      // output section itself is still running) and of the parts of the
+      // solve
+      auto times = timer.get_summary_data(TimerOutput::total_wall_time);
+      for (const auto &[name, time] : solver->section_times())
+        times[name] = time.seconds;
       std::string sections = "{";
-      for (const auto &[name, seconds] :
-           timer.get_summary_data(TimerOutput::total_wall_time))
+      for (const auto &[name, seconds] : times)
         if (name != "Output")
           sections += std::string(sections.size() > 1 ? ", " : "") + "\"" +
                       name + "\": " + number(seconds);
@@ -466,7 +466,19 @@ namespace FoslsContact
     solve();
     output_results();
     if (parameters.output.verbose)
-      timer.print_summary();
+      {
+        timer.print_summary();
+        // the parts of the solve (inside the section "Solve")
+        if (!solver->section_times().empty())
+          pcout << "| Parts of the section Solve                | no. calls |  wall time |"
+                << std::endl;
+        for (const auto &[name, time] : solver->section_times())
+          pcout << "| " << std::left << std::setw(42) << name << "| " << std::right
+                << std::setw(9) << time.calls << " | " << std::setw(9)
+                << std::setprecision(3) << time.seconds << "s |" << std::endl;
+        if (!solver->section_times().empty())
+          pcout << std::endl;
+      }
   }
 
   template class FoslsProblem<2>;

@@ -109,6 +109,16 @@ namespace FoslsContact
 
 
   template <int dim>
+  std::map<std::string, QPSolver::SectionTime>
+  MonotoneMultigrid<dim>::section_times() const
+  {
+    return {{"Solve: smoothing", smoothing_time},
+            {"Solve: Galerkin operators and patch setup", galerkin_time},
+            {"Solve: coarse solve", coarse_time}};
+  }
+
+
+  template <int dim>
   std::vector<unsigned int>
   MonotoneMultigrid<dim>::n_patch_colors() const
   {
@@ -134,7 +144,7 @@ namespace FoslsContact
     const MPI_Comm comm = hierarchy.level(l).partitioner->get_mpi_communicator();
     if (Utilities::MPI::min(unchanged ? 1u : 0u, comm) == 1)
       return;
-    const auto timing = section("Solve: Galerkin operators and patch setup");
+    const TimedScope timing(galerkin_time);
 
     // P~: the rows of P at truncated DoFs are zero (its pattern holds P's
     // and the entries flux rerouting may add; both sorted by column)
@@ -180,11 +190,11 @@ namespace FoslsContact
               }
       }
     std::vector<bool> removed_local(P.n(), false);
-    for (const auto &list : Utilities::MPI::all_gather(comm, removed))
+    for (const auto &list : gather_all(comm, removed))
       for (const auto j : list)
         if (coarse.partitioner->in_local_range(j) || coarse.partitioner->is_ghost_entry(j))
           removed_local[coarse.partitioner->global_to_local(j)] = true;
-    for (const auto &list : Utilities::MPI::all_gather(comm, entries))
+    for (const auto &list : gather_all(comm, entries))
       for (const auto &[row, column, value] : list)
         {
           const auto i = static_cast<types::global_dof_index>(row);
@@ -329,7 +339,7 @@ namespace FoslsContact
                                        const std::vector<DoFRole> &role,
                                        LevelVector &               v)
   {
-    const auto     timing      = section("Solve: coarse solve");
+    const TimedScope timing(coarse_time);
     const auto &   partitioner = *v.get_partitioner();
     const MPI_Comm comm        = v.get_mpi_communicator();
     const auto     n_owned     = partitioner.locally_owned_size();
@@ -343,7 +353,7 @@ namespace FoslsContact
         coarse_version = version[0];
         // the owned part of each process: the whole vector in global order
         // (each owns a contiguous range, the processes in order)
-        coarse_counts = Utilities::MPI::all_gather(comm, int(n_owned));
+        coarse_counts = gather_all(comm, int(n_owned));
         coarse_displacements.assign(coarse_counts.size(), 0);
         for (unsigned int p = 1; p < coarse_counts.size(); ++p)
           coarse_displacements[p] = coarse_displacements[p - 1] + coarse_counts[p - 1];
@@ -353,7 +363,7 @@ namespace FoslsContact
           my_roles.push_back(static_cast<unsigned int>(role[i]));
         const auto              n = partitioner.size();
         DynamicSparsityPattern  dsp(n, n);
-        const auto              all_entries = Utilities::MPI::all_gather(comm, mine);
+        const auto              all_entries = gather_all(comm, mine);
         for (const auto &part : all_entries)
           for (const auto &[i, j, value] : part)
             dsp.add(types::global_dof_index(i), types::global_dof_index(j));
@@ -363,7 +373,7 @@ namespace FoslsContact
           for (const auto &[i, j, value] : part)
             coarse_matrix_global.set(types::global_dof_index(i), types::global_dof_index(j), value);
         coarse_role_global.clear();
-        for (const auto &part : Utilities::MPI::all_gather(comm, my_roles))
+        for (const auto &part : gather_all(comm, my_roles))
           for (const auto x : part)
             coarse_role_global.push_back(static_cast<DoFRole>(x));
 
@@ -392,9 +402,13 @@ namespace FoslsContact
     const unsigned int n    = dofs.size();
     if (n == 0)
       return;
-    auto gather = [&](const LevelVector &x) {
-      std::vector<double> all(partitioner.size());
-      const int           ierr = MPI_Allgatherv(x.begin(),
+    // (into kept arrays: a W-cycle visits the coarse level hundreds of
+    // times per Newton step, and on the square the allocations were a
+    // third of the solve's 4 us)
+    auto &work   = coarse_work;
+    auto  gather = [&](const LevelVector &x, std::vector<double> &all) {
+      all.resize(partitioner.size());
+      const int ierr = MPI_Allgatherv(x.begin(),
                                       n_owned,
                                       MPI_DOUBLE,
                                       all.data(),
@@ -403,15 +417,20 @@ namespace FoslsContact
                                       MPI_DOUBLE,
                                       comm);
       AssertThrowMPI(ierr);
-      return all;
     };
-    const std::vector<double> r_all = gather(r), ub_all = gather(ub);
-    std::vector<double>       v_all = gather(v);
+    gather(r, work.r_all);
+    gather(ub, work.ub_all);
+    gather(v, work.v_all);
+    const auto &r_all = work.r_all, &ub_all = work.ub_all;
+    auto &      v_all = work.v_all;
     if (n <= 2000)
       {
-        Vector<double>    g(n), s(n), c, v_global(v_all.begin(), v_all.end()),
-          Av(v_all.size());
-        std::vector<bool> at_bound;
+        auto &g = work.g, &s = work.s, &c = work.c, &v_global = work.v_global, &Av = work.Av;
+        g.reinit(n, true);
+        s.reinit(n, true);
+        v_global.reinit(v_all.size(), true);
+        Av.reinit(v_all.size(), true);
+        std::copy(v_all.begin(), v_all.end(), v_global.begin());
         coarse_matrix_global.vmult(Av, v_global);
         for (unsigned int a = 0; a < n; ++a)
           {
@@ -420,9 +439,9 @@ namespace FoslsContact
                      std::max(0., ub_all[dofs[a]] - v_all[dofs[a]]) :
                      std::numeric_limits<double>::infinity();
           }
-        coarse_qp.solve(g, s, c, at_bound);
+        coarse_qp.solve(g, s, c, work.at_bound);
         for (unsigned int a = 0; a < n; ++a)
-          v_all[dofs[a]] = at_bound[a] ? ub_all[dofs[a]] : v_all[dofs[a]] + c[a];
+          v_all[dofs[a]] = work.at_bound[a] ? ub_all[dofs[a]] : v_all[dofs[a]] + c[a];
       }
     else
       {
@@ -470,7 +489,7 @@ namespace FoslsContact
     smoother.set_backward(false);
     smoother.set_steps(parameters.pre_smoothing);
     {
-      const auto timing = section("Solve: smoothing");
+      const TimedScope timing(smoothing_time);
       smoother.smooth(l, v, r); // (v's ghost values are valid afterwards)
     }
 
@@ -595,7 +614,7 @@ namespace FoslsContact
     smoother.set_backward(true);
     smoother.set_steps(parameters.post_smoothing);
     {
-      const auto timing = section("Solve: smoothing");
+      const TimedScope timing(smoothing_time);
       smoother.smooth(l, v, r);
     }
     smoother.use_linear_roles(l, false);
@@ -654,7 +673,7 @@ namespace FoslsContact
     smoother.set_backward(false);
     smoother.set_steps(parameters.pre_smoothing);
     {
-      const auto timing = section("Solve: smoothing");
+      const TimedScope timing(smoothing_time);
       smoother.smooth(finest, x, qp.rhs);
     }
 
@@ -707,7 +726,7 @@ namespace FoslsContact
       {
         if (linear_role != linear_role_used)
           {
-            const auto timing = section("Solve: Galerkin operators and patch setup");
+            const TimedScope timing(galerkin_time);
             smoother.set_linear_roles(finest, linear_role);
             linear_role_used = linear_role;
           }
@@ -819,7 +838,7 @@ namespace FoslsContact
     smoother.set_backward(true);
     smoother.set_steps(parameters.post_smoothing);
     {
-      const auto timing = section("Solve: smoothing");
+      const TimedScope timing(smoothing_time);
       smoother.smooth(finest, x, qp.rhs);
     }
     return n_cycles;
@@ -841,13 +860,16 @@ namespace FoslsContact
     update_ghosts(x);
     qp.project_to_feasible(x);
     monitor.start(x);
-    smoother.initialize_level(finest,
-                              qp.matrix,
-                              hierarchy.patches(finest),
-                              hierarchy.patch_colors(finest),
-                              hierarchy.n_colors(finest),
-                              qp.role,
-                              qp.partitioner);
+    {
+      const TimedScope timing(galerkin_time);
+      smoother.initialize_level(finest,
+                                qp.matrix,
+                                hierarchy.patches(finest),
+                                hierarchy.patch_colors(finest),
+                                hierarchy.n_colors(finest),
+                                qp.role,
+                                qp.partitioner);
+    }
     if (parameters.krylov_steps == 0 && finest > 0)
       import_rerouting_values(finest, qp.matrix);
     linear_role_used.clear(); // the linear roles of the finest level are gone

@@ -151,6 +151,23 @@ namespace FoslsContact
   }
 
   /**
+   * Utilities::MPI::all_gather() (@p object of every process, in the order
+   * of the ranks), but on one process without a copy through its
+   * serialization, which compresses with zlib even there (the Galerkin
+   * updates gather twice per level, the coarse factorization three
+   * times; on level 5 of the square the coarse solves took 0.29 ms per
+   * solve with it and 0.08 ms without).
+   */
+  template <typename T>
+  std::vector<T>
+  gather_all(const MPI_Comm comm, const T &object)
+  {
+    if (Utilities::MPI::n_mpi_processes(comm) == 1)
+      return {object};
+    return Utilities::MPI::all_gather(comm, object);
+  }
+
+  /**
    * The process that owns each of the global @p indices (every process
    * owns a contiguous range of a level's DoFs, the processes in order).
    * Collective.

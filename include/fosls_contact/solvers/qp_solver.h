@@ -4,6 +4,9 @@
 #include <fosls_contact/output/monitor.h>
 #include <fosls_contact/qp/constrained_qp.h>
 
+#include <map>
+#include <string>
+
 namespace FoslsContact
 {
   /**
@@ -18,6 +21,15 @@ namespace FoslsContact
     virtual void solve(const ConstrainedQP &qp,
                        LevelVector &        x,
                        Monitor &            monitor) = 0;
+
+    /** Wall time and number of calls of one part of solve(). */
+    struct SectionTime
+    {
+      double       seconds = 0;
+      unsigned int calls   = 0;
+    };
+    /** The wall time of the parts of solve() so far, by name (none here). */
+    virtual std::map<std::string, SectionTime> section_times() const { return {}; }
   };
 } // namespace FoslsContact
 

@@ -469,15 +469,17 @@ namespace FoslsContact
       {
         timer.print_summary();
         // the parts of the solve (inside the section "Solve")
-        if (!solver->section_times().empty())
-          pcout << "| Parts of the section Solve                | no. calls |  wall time |"
-                << std::endl;
-        for (const auto &[name, time] : solver->section_times())
-          pcout << "| " << std::left << std::setw(42) << name << "| " << std::right
-                << std::setw(9) << time.calls << " | " << std::setw(9)
-                << std::setprecision(3) << time.seconds << "s |" << std::endl;
-        if (!solver->section_times().empty())
-          pcout << std::endl;
+        const auto parts = solver->section_times();
+        if (!parts.empty())
+          {
+            pcout << "| Parts of the section Solve                | no. calls |  wall time |"
+                  << std::endl;
+            for (const auto &[name, time] : parts)
+              pcout << "| " << std::left << std::setw(42) << name << "| " << std::right
+                    << std::setw(9) << time.calls << " | " << std::setw(9)
+                    << std::setprecision(3) << time.seconds << "s |" << std::endl;
+            pcout << std::endl;
+          }
       }
   }
 

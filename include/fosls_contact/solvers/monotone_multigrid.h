@@ -127,7 +127,7 @@ namespace FoslsContact
       SectionTime &                         time;
       std::chrono::steady_clock::time_point start;
     };
-    mutable SectionTime smoothing_time, galerkin_time, coarse_time;
+    SectionTime smoothing_time, galerkin_time, coarse_time;
 
     /**
      * One cycle on level @p l for Q_l with matrix @p A; @p v is updated.
@@ -280,9 +280,8 @@ namespace FoslsContact
     /** The work arrays of the coarse solve (whole coarsest vectors). */
     struct CoarseWork
     {
-      std::vector<double> r_all, ub_all, v_all;
-      Vector<double>      g, s, c, v_global, Av;
-      std::vector<bool>   at_bound;
+      Vector<double>    r_all, ub_all, v_all, g, s, c, Av;
+      std::vector<bool> at_bound;
     } coarse_work;
     /** The number of owned coarsest DoFs per process, and their offsets. */
     std::vector<int>                                   coarse_counts, coarse_displacements;

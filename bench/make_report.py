@@ -529,10 +529,15 @@ if rates:
               f"λ = {mx[1]}), min {mn[2]:.3f} → **{'met' if met else 'MISSED'}** "
               f"(levels measured: {min(z[0] for z in rates)}..{max(z[0] for z in rates)}).\n")
 md.append("### Wall time per cycle per DoF (time_solve_s / cycles / DoFs), default solver\n")
-md.append("All cores (2 threads here), λ = 1 on one thread (`Solver/Threads = 1`; "
-          "the iterates are the same), and λ = 1 on 2 MPI processes with one thread "
-          "each (`mpirun -np 2`). Each entry is the fastest of 3 runs (their solve "
-          "times are in the notes of `bench/results/runs.csv`).\n")
+md.append("All cores (2 threads here), λ = 1 on one thread (`Solver/Threads = 1`), "
+          "and λ = 1 on 2 MPI processes with one thread each (`mpirun -np 2`). The "
+          "iterates agree to round-off, not bit for bit: deal.II's vector reductions "
+          "split a vector by the number of threads (deal.II 9.4, "
+          "vector_operations_internal.h), so a cycle count may differ by one (compare "
+          "the cycles columns of `bench/results/runs.csv`). Each entry is the fastest "
+          "of 3 runs, the second and third run round-robin over the cases at the end "
+          "of the suite (their solve times are in the notes of "
+          "`bench/results/runs.csv`).\n")
 body = []
 variants = [("1", "default"), ("inf", "default"), ("1", "default1t"), ("1", "default2p")]
 variant_text = {"default1t": ", 1 thread", "default2p": ", 2 processes"}

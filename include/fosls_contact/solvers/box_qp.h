@@ -39,11 +39,8 @@ namespace FoslsContact
       return matrix(i, j);
     }
 
-    /** Entry (i, j) of the inverse of M. */
-    double inverse_entry(const unsigned int i, const unsigned int j) const
-    {
-      return inverse(i, j);
-    }
+    /** The inverse of M. */
+    const FullMatrix<double> &inverse_matrix() const { return inverse; }
 
     /**
      * Solve; on return, c is the minimizer and at_bound[i] tells whether

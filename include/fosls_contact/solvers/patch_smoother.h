@@ -1,6 +1,7 @@
 #ifndef fosls_contact_solvers_patch_smoother_h
 #define fosls_contact_solvers_patch_smoother_h
 
+#include <deal.II/base/aligned_vector.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/multigrid/mg_smoother.h>
 
@@ -133,7 +134,9 @@ namespace FoslsContact
      *   qps).
      *
      * The patches are packed color by color: those of color k are
-     * color_start[k] .. color_start[k+1].
+     * color_start[k] .. color_start[k+1]. The large arrays are
+     * AlignedVectors, whose resize_fast() leaves new entries uninitialized
+     * for the parallel fill of initialize_level().
      */
     struct Level
     {
@@ -143,12 +146,12 @@ namespace FoslsContact
       std::vector<unsigned int>            start;
       std::vector<std::size_t>             inverse_start;
       std::vector<std::size_t>             neighbor_start;
-      std::vector<types::global_dof_index> neighbors;
+      AlignedVector<types::global_dof_index> neighbors;
       std::vector<bool>                    bounded;
-      std::vector<double>                  inverse;
+      AlignedVector<double>                inverse;
       std::vector<std::size_t>             row_start;
-      std::vector<std::uint16_t>           columns;
-      std::vector<double>                  values;
+      AlignedVector<std::uint16_t>         columns;
+      AlignedVector<double>                values;
       std::vector<unsigned int>            box_qp;
       std::vector<BoxQP>                   qps;
       std::vector<unsigned int>            color_start;

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Build fosls-contact, run every benchmark case sequentially and regenerate
-# doc/results.md and doc/figures/*.png from the measurements.
+# doc/results.md, doc/level_costs.md and doc/figures/*.png from the
+# measurements.
 #
 #   bench/run_all.sh            # from any directory
 #   bench/run_all.sh --report   # only regenerate the report from bench/results/
@@ -17,5 +18,7 @@ fi
 if [[ "${1:-}" != "--report" ]]; then
   mkdir -p "$root/bench/results"
   "$py" "$root/bench/run_cases.py" | tee "$root/bench/results/run_cases.log"
+  # where the cycles' time goes, level by level (doc/level_costs.md)
+  "$py" "$root/bench/level_costs.py" | tee "$root/bench/results/level_costs.log"
 fi
 "$py" "$root/bench/make_report.py"

@@ -390,6 +390,20 @@ namespace FoslsContact
         for (const unsigned int c : mg->n_patch_colors())
           colors += (colors.size() > 1 ? ", " : "") + std::to_string(c);
         summary["patch_colors"] = colors + "]";
+        // where the cycles' time goes: visits and wall time of every level
+        // without the coarser levels it visits (level 0: coarse solves)
+        std::string dofs = "[", visits = "[", seconds = "[";
+        const auto  times = mg->level_times();
+        for (unsigned int l = 0; l < times.size(); ++l)
+          {
+            const std::string separator = l ? ", " : "";
+            dofs += separator + std::to_string(discretization->level(l).n_dofs);
+            visits += separator + std::to_string(times[l].calls);
+            seconds += separator + number(times[l].seconds);
+          }
+        summary["level_dofs"]   = dofs + "]";
+        summary["level_visits"] = visits + "]";
+        summary["level_time_s"] = seconds + "]";
       }
     summary["time_setup_s"]          = number(time_setup);
     summary["time_solve_s"]          = number(time_solve);

@@ -23,7 +23,8 @@ namespace FoslsContact
                                             const unsigned int         finest_level,
                                             const SparsityPattern &    fine_sparsity,
                                             const Parameters::Solver & parameters)
-    : hierarchy(discretization, transfer, finest_level)
+    : level_time(finest_level + 1)
+    , hierarchy(discretization, transfer, finest_level)
     , parameters(parameters)
     , fine_sparsity(&fine_sparsity)
     , finest(finest_level)
@@ -115,6 +116,19 @@ namespace FoslsContact
     return {{"Solve: smoothing", smoothing_time},
             {"Solve: Galerkin operators and patch setup", galerkin_time},
             {"Solve: coarse solve", coarse_time}};
+  }
+
+
+  template <int dim>
+  std::vector<QPSolver::SectionTime>
+  MonotoneMultigrid<dim>::level_times() const
+  {
+    std::vector<SectionTime> times(level_time);
+    times[0] = coarse_time;
+    // (level l's visits include those of level l - 1)
+    for (unsigned int l = 1; l <= finest; ++l)
+      times[l].seconds -= level_time[l - 1].seconds + (l == 1 ? coarse_time.seconds : 0.);
+    return times;
   }
 
 
@@ -479,6 +493,7 @@ namespace FoslsContact
         coarse_solve(A, r, ub, role, v);
         return;
       }
+    const TimedScope level_timing(level_time[l]);
 
     // the finest level of the linear cycle relaxes with the linear roles
     // (on coarser levels the truncation takes care of them)

@@ -6,7 +6,9 @@
 # levels 3, 4, 5, 6 (130 to 6402 DoFs). Prints iterations and cycles per
 # level and asserts max - min <= 2 iterations and at most 6 iterations
 # per level; every run converged to a KKT residual < 1e-10 with
-# energy_increases == 0 and feasible iterates.
+# energy_increases == 0 and feasible iterates; summary.json's level costs
+# (level_visits, level_time_s) have the visits of a W-cycle and times that
+# fit in the solve time.
 # Measured (Nov 2026): lambda = 1: 5, 3, 3, 4 iterations (19, 13, 12, 16
 # cycles); lambda = inf: 4, 3, 3, 3 iterations (16, 12, 12, 12 cycles);
 # level 7: 4 and 3 iterations. So max - min is 2 for lambda = 1 (no margin
@@ -42,6 +44,18 @@ for lam in ["1", "inf"]:
         check_monotone_feasible(run, label)
         check(run["patch_colors"] == [4] * (levels - 1),
               label + ": 4 patch colors on every level (MultilevelHierarchy)")
+        # summary.json's level costs (bench/level_costs.py): a W-cycle
+        # visits level l 2^(J-l) times per visit of the finest level J, the
+        # coarse solve once per visit of level 1; the times are those of the
+        # levels without the coarser ones, so they add up to at most the
+        # solve time
+        visits, seconds = run["level_visits"], run["level_time_s"]
+        J = len(visits) - 1
+        check(run["level_dofs"][J] == run["dofs"] and visits[0] == visits[1] and
+              all(visits[l] == visits[J] * 2 ** (J - l) for l in range(1, J + 1)) and
+              min(seconds) >= 0 and sum(seconds) <= run["time_solve_s"],
+              label + ": W-cycle visits level l 2^(J-l) times per cycle, "
+              "level times >= 0 and within the solve time")
         iterations.append(run["iterations"] or 1000)
     print("iterations over levels 3..6: min %d, max %d"
           % (min(iterations), max(iterations)))

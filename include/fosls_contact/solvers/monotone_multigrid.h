@@ -107,6 +107,16 @@ namespace FoslsContact
      */
     std::map<std::string, SectionTime> section_times() const override;
 
+    /**
+     * The visits of every level by the cycles (level 0: the coarse
+     * solves) and their wall time without that of the coarser levels they
+     * visit: where a cycle's time goes. A W-cycle visits level l
+     * 2^(finest - l) times per cycle; on a small problem its coarse levels,
+     * too small to be split among threads, take a large share of it
+     * (bench/level_costs.py, doc/level_costs.md).
+     */
+    std::vector<SectionTime> level_times() const;
+
   private:
     /** Adds the wall time of its lifetime to a SectionTime. */
     class TimedScope
@@ -128,6 +138,8 @@ namespace FoslsContact
       std::chrono::steady_clock::time_point start;
     };
     SectionTime smoothing_time, galerkin_time, coarse_time;
+    /** The visits of levels 1..finest by cycle(), with the coarser levels. */
+    std::vector<SectionTime> level_time;
 
     /**
      * One cycle on level @p l for Q_l with matrix @p A; @p v is updated.

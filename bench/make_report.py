@@ -572,6 +572,7 @@ for lam, config in variants:
                 "o-", label=f"λ = {'∞' if lam == 'inf' else lam}"
                 f"{variant_text.get(config, '')}")
 ax.set_xlabel("level")
+ax.xaxis.get_major_locator().set_params(integer=True)  # (levels are whole numbers)
 ax.set_ylabel("µs per cycle per DoF")
 ax.set_ylim(bottom=0)
 ax.grid(alpha=0.3)

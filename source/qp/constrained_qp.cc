@@ -209,8 +209,8 @@ namespace FoslsContact
         local.add(p);
       // the processes' sums, added in the order of the ranks (the same on
       // every process)
-      const auto all = Utilities::MPI::all_gather(x.get_mpi_communicator(),
-                                                  std::make_pair(local.sum, local.error));
+      const auto all =
+        gather_all(x.get_mpi_communicator(), std::make_pair(local.sum, local.error));
       CompensatedSum total;
       for (const auto &[sum, error] : all)
         {

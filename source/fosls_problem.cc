@@ -391,7 +391,7 @@ namespace FoslsContact
           colors += (colors.size() > 1 ? ", " : "") + std::to_string(c);
         summary["patch_colors"] = colors + "]";
         // where the cycles' time goes: visits and wall time of every level
-        // without the coarser levels it visits (level 0: coarse solves)
+        // without the coarser levels it visits (MonotoneMultigrid::level_times)
         std::string dofs = "[", visits = "[", seconds = "[";
         const auto  times = mg->level_times();
         for (unsigned int l = 0; l < times.size(); ++l)

@@ -30,7 +30,9 @@ namespace FoslsContact
    *     the fine defect obstacle (eqs. 31-32, 35-36, CoarseObstacles), and
    *     the coarse problem is solved by one cycle on level l-1,
    *  3. nu_2 backward sweeps;
-   * on level 0 the box-constrained problem is solved exactly.
+   * on level 0 the box-constrained problem is solved exactly. (The linear
+   * cycle of the Newton step stops earlier, at linear_coarsest, which it
+   * solves exactly.)
    *
    * Because A_{l-1} is the Galerkin product, Q_{l-1}(c) = Q_l(v + P~ c) -
    * Q_l(v): every coarse correction minimizes the fine functional itself,
@@ -108,9 +110,11 @@ namespace FoslsContact
     std::map<std::string, SectionTime> section_times() const override;
 
     /**
-     * The visits of every level by the cycles (level 0: the coarse
-     * solves) and their wall time without that of the coarser levels they
-     * visit: where a cycle's time goes. A W-cycle visits level l
+     * The visits of every level by the cycles (those of the coarsest
+     * level the cycle reaches are exact solves: level 0, or a finer one in
+     * the linear cycle, whose coarser levels then have no visits) and their
+     * wall time without that of the coarser levels they visit: where a
+     * cycle's time goes. A W-cycle visits level l
      * 2^(finest - l) times per cycle; on a small problem its coarse levels,
      * too small to be split among threads, take a large share of it
      * (bench/level_costs.py, doc/level_costs.md).
@@ -138,8 +142,33 @@ namespace FoslsContact
       std::chrono::steady_clock::time_point start;
     };
     SectionTime smoothing_time, galerkin_time, coarse_time;
-    /** The visits of levels 1..finest by cycle(), with the coarser levels. */
+    /** The visits of every level by cycle(), with the coarser levels. */
     std::vector<SectionTime> level_time;
+
+    /**
+     * The linear cycle (the Newton step's preconditioner) solves the
+     * finest level below the finest with at most this many DoFs exactly,
+     * by coarse_solve(), in one visit, instead of visiting the levels
+     * below it. Its problem is linear (the obstacles of the linear cycle
+     * are +inf) and its operator changes only with the roles of a Newton
+     * step (the truncation of the linear cycle does not depend on the
+     * iterate; on the square it is set up once per solve), so the dense
+     * inverse is computed that often, and a visit costs one product with
+     * it: on the square, level 2 (130 DoFs) took about 34 us per
+     * W-cycle visit with the levels below it, 16 us solved exactly. The
+     * iterations of the solver tests stayed the same and 9 cycle counts
+     * in 5 of them changed (7 down by 1 to 3, 2 up by 1); the time per
+     * cycle and DoF went down by 9.6% on level 5 of the square, 4.5% on
+     * level 7 and 2.8% on level 9 (by hand: the two binaries alternated,
+     * the fastest of 3 runs each, 2 threads). Level 3 (450 DoFs) is too
+     * large for it: solved exactly the same way, a level-5 solve took
+     * 43 ms instead of 11 (the dense inverse), and UMFPACK took 2.6 ms to
+     * factorize it and 0.3 ms per solve (by hand). In 3D level 2 has
+     * 1095 DoFs and level 1 189.
+     */
+    static constexpr unsigned int linear_coarse_max_dofs = 200;
+    /** The linear cycle's coarsest level (0 if no level qualifies). */
+    unsigned int linear_coarsest = 0;
 
     /**
      * One cycle on level @p l for Q_l with matrix @p A; @p v is updated.
@@ -165,10 +194,12 @@ namespace FoslsContact
     unsigned int newton_step(const ConstrainedQP &qp, LevelVector &x);
 
     /**
-     * Exact solution of the box-constrained coarsest problem, gathered on
-     * every process (the coarse mesh is small) and solved there alike.
+     * Exact solution of the box-constrained problem of level @p l (the
+     * coarsest, or the linear cycle's coarsest, linear_coarsest), gathered
+     * on every process (the level is small) and solved there alike.
      */
-    void coarse_solve(const SparseMatrix<double> &A,
+    void coarse_solve(const unsigned int          l,
+                      const SparseMatrix<double> &A,
                       const LevelVector &         r,
                       const LevelVector &         ub,
                       const std::vector<DoFRole> &role,

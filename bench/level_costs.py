@@ -8,9 +8,9 @@ reads summary.json's level_dofs, level_visits and level_time_s: the visits of
 every level by the cycles and their wall time without the coarser levels they
 visit (the coarsest level visited is solved exactly: level 2 of 130 DoFs in
 the Newton steps' linear cycle, which does not visit levels 0 and 1). The
-cycles are those of the
-Newton steps' CG (the finest level's visits); the Newton steps' projected
-smoothing, the CG vector operations and the monitor are outside them.
+cycles are those of the Newton steps' CG (the finest level's visits); the
+Newton steps' projected smoothing, the CG vector operations and the monitor
+are outside them.
 
 This is the measurement behind the flatness analysis of doc/method.md
 (section 8): a W-cycle visits level l 2^(J-l) times, so in 2D every level

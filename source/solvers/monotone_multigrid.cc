@@ -247,9 +247,9 @@ namespace FoslsContact
     version_used[l]    = version[l];
     reroute_used[l]    = reroute;
     ++version[l - 1];
-    // (not for the linear cycle's exactly solved level, which it does not
-    // smooth; the linear cycle is the one that does not reroute)
-    if (l - 1 > 0 && (reroute || l - 1 != linear_coarsest))
+    // (not for a level the cycle solves exactly, which it does not smooth;
+    // the linear cycle is the one that does not reroute)
+    if (!solved_exactly(l - 1, !reroute))
       smoother.initialize_level(l - 1,
                                 galerkin[l - 1],
                                 hierarchy.patches(l - 1),
@@ -503,7 +503,7 @@ namespace FoslsContact
                                 const bool                  linear)
   {
     const TimedScope level_timing(level_time[l]);
-    if (l == 0 || (linear && l == linear_coarsest))
+    if (solved_exactly(l, linear))
       {
         coarse_solve(l, A, r, ub, role, v);
         return;
@@ -524,8 +524,7 @@ namespace FoslsContact
     const auto &       fine        = hierarchy.level(l);
     const auto &       coarse      = hierarchy.level(l - 1);
     // (an exact coarse solve needs one visit)
-    const unsigned int visits =
-      (l == 1 || (linear && l - 1 == linear_coarsest)) ? 1 : parameters.cycle_gamma;
+    const unsigned int visits = solved_exactly(l - 1, linear) ? 1 : parameters.cycle_gamma;
     const unsigned int n_local     = fine.n_local();
     const unsigned int n_owned     = fine.n_owned();
     // the work vectors of this level (a level is never visited twice at

@@ -169,6 +169,14 @@ namespace FoslsContact
     static constexpr unsigned int linear_coarse_max_dofs = 200;
     /** The linear cycle's coarsest level (0 if no level qualifies). */
     unsigned int linear_coarsest = 0;
+    /**
+     * Whether the cycle (the linear one if @p linear) solves level @p l
+     * exactly instead of smoothing it and visiting the levels below.
+     */
+    bool solved_exactly(const unsigned int l, const bool linear) const
+    {
+      return l == 0 || (linear && l == linear_coarsest);
+    }
 
     /**
      * One cycle on level @p l for Q_l with matrix @p A; @p v is updated.

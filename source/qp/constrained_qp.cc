@@ -4,6 +4,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -209,8 +210,8 @@ namespace FoslsContact
         local.add(p);
       // the processes' sums, added in the order of the ranks (the same on
       // every process)
-      const auto all =
-        gather_all(x.get_mpi_communicator(), std::make_pair(local.sum, local.error));
+      const auto all = gather_all(x.get_mpi_communicator(),
+                                  std::array<double, 2>{{local.sum, local.error}});
       CompensatedSum total;
       for (const auto &[sum, error] : all)
         {

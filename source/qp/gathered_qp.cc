@@ -10,12 +10,21 @@ namespace FoslsContact
                 const SparseMatrix<double> *       matrix,
                 const Utilities::MPI::Partitioner &partitioner)
   {
+    Assert(matrix == nullptr || &matrix->get_sparsity_pattern() == &pattern,
+           ExcMessage("owned_entries: the matrix is not on the pattern"));
     std::vector<std::array<double, 3>> entries;
     for (unsigned int i = 0; i < partitioner.locally_owned_size(); ++i)
-      for (auto e = pattern.begin(i); e != pattern.end(i); ++e)
-        entries.push_back({{double(partitioner.local_to_global(i)),
-                            double(partitioner.local_to_global(e->column())),
-                            matrix ? matrix->el(i, e->column()) : 0.}});
+      {
+        const double row = partitioner.local_to_global(i);
+        // (the matrix's entries in its own order, instead of
+        // SparseMatrix::el(), which searches the row for every entry)
+        if (matrix != nullptr)
+          for (auto e = matrix->begin(i); e != matrix->end(i); ++e)
+            entries.push_back({{row, double(partitioner.local_to_global(e->column())), e->value()}});
+        else
+          for (auto e = pattern.begin(i); e != pattern.end(i); ++e)
+            entries.push_back({{row, double(partitioner.local_to_global(e->column())), 0.}});
+      }
     return entries;
   }
 

@@ -1,6 +1,7 @@
 #ifndef fosls_contact_solvers_monotone_multigrid_h
 #define fosls_contact_solvers_monotone_multigrid_h
 
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
@@ -320,21 +321,42 @@ namespace FoslsContact
     std::vector<unsigned int>                          version, version_used;
     std::vector<bool>                                  reroute_used;
     /**
-     * The coarsest problem, gathered on every process in global numbering
-     * (coarse_matrix_global) and factorized for one coarse operator.
+     * The coarsest problem in global numbering (coarse_global: the level's
+     * own matrix on one process, else coarse_matrix_global, gathered on
+     * every process), its dense matrix on the DoFs that move
+     * (coarse_dense, up to 2000 of them) and, made when first needed for
+     * this operator, its factorizations: the Cholesky factor for a visit
+     * without a finite obstacle (the linear cycle's), a BoxQP (the inverse)
+     * for one with finite obstacles. The Cholesky factor costs a sixth of
+     * the inverse's flops; a factor that LAPACK refuses (not positive
+     * definite in floating point) leaves such visits to the BoxQP.
      */
+    FullMatrix<double>                                 coarse_dense;
+    LAPACKFullMatrix<double>                           coarse_cholesky;
     BoxQP                                              coarse_qp;
+    enum class CholeskyState : unsigned char
+    {
+      none,
+      factorized,
+      refused
+    } coarse_cholesky_state = CholeskyState::none;
+    bool coarse_qp_ready    = false;
     std::vector<types::global_dof_index>               coarse_dofs;
     SparsityPattern                                    coarse_sparsity_global;
     SparseMatrix<double>                               coarse_matrix_global;
+    const SparseMatrix<double> *                       coarse_global = nullptr;
     std::vector<DoFRole>                               coarse_role_global;
     /** The work arrays of the coarse solve (whole coarsest vectors). */
     struct CoarseWork
     {
-      Vector<double>    r_all, ub_all, v_all, g, s, c, Av;
-      std::vector<bool> at_bound;
+      Vector<double>      r_all, ub_all, v_all, g, s, c, Av;
+      std::vector<double> owned_triples, all_triples;
+      std::vector<bool>   at_bound;
     } coarse_work;
-    /** The number of owned coarsest DoFs per process, and their offsets. */
+    /**
+     * Per process: three times its number of owned coarsest DoFs (r, ub
+     * and v of each), and their offsets.
+     */
     std::vector<int>                                   coarse_counts, coarse_displacements;
     const SparseMatrix<double> *                       coarse_matrix  = nullptr;
     unsigned int                                       coarse_version = numbers::invalid_unsigned_int;

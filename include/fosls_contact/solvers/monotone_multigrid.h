@@ -153,10 +153,11 @@ namespace FoslsContact
      * below it. Its problem is linear (the obstacles of the linear cycle
      * are +inf) and its operator changes only with the roles of a Newton
      * step (the truncation of the linear cycle does not depend on the
-     * iterate; on the square it is set up once per solve), so the dense
-     * inverse is computed that often, and a visit costs one product with
-     * it: on the square, level 2 (130 DoFs) took about 34 us per
-     * W-cycle visit with the levels below it, 16 us solved exactly. The
+     * iterate; on the square it is set up once per solve), so its dense
+     * factor is computed that often, and a visit costs two triangular
+     * solves with it (since session 13; with the dense inverse before, on
+     * the square, level 2 (130 DoFs) took about 34 us per W-cycle visit
+     * with the levels below it, 16 us solved exactly). The
      * iterations of the solver tests stayed the same and 9 cycle counts
      * in 5 of them changed (7 down by 1 to 3, 2 up by 1); the time per
      * cycle and DoF went down by 9.6% on level 5 of the square, 4.5% on
@@ -327,9 +328,10 @@ namespace FoslsContact
      * (coarse_dense, up to 2000 of them) and, made when first needed for
      * this operator, its factorizations: the Cholesky factor for a visit
      * without a finite obstacle (the linear cycle's), a BoxQP (the inverse)
-     * for one with finite obstacles. The Cholesky factor costs a sixth of
-     * the inverse's flops; a factor that LAPACK refuses (not positive
-     * definite in floating point) leaves such visits to the BoxQP.
+     * for one with finite obstacles (on the square's level 2 the factor
+     * took about 0.1 ms, the inverse 0.65 ms, by hand); a factor that
+     * LAPACK refuses (not positive definite in floating point) leaves such
+     * visits to the BoxQP.
      */
     FullMatrix<double>                                 coarse_dense;
     LAPACKFullMatrix<double>                           coarse_cholesky;

@@ -182,7 +182,7 @@ namespace FoslsContact
         case Parameters::Solver::Type::active_set:
           return std::make_unique<ActiveSetDirect>();
         case Parameters::Solver::Type::projected_gauss_seidel:
-          return std::make_unique<ProjectedGaussSeidel>();
+          return std::make_unique<ProjectedGaussSeidel>(discretization->sweep_order(level));
         default:
           {
             return std::make_unique<MonotoneMultigrid<dim>>(

@@ -11,10 +11,12 @@ namespace FoslsContact
     update_ghosts(x);
     distributed.project_to_feasible(x);
     monitor.start(x);
-    // The sweep is sequential in the global order of the DoFs: it runs on
-    // the first process, on the gathered problem (the baseline, meant for
-    // one process).
+    // The sweep is sequential in the order of the support points: it runs
+    // on the first process, on the gathered problem (the baseline, meant
+    // for one process).
     const GatheredQP gathered(distributed);
+    AssertThrow(!gathered.here() || order.size() == distributed.size(),
+                ExcMessage("projected Gauss-Seidel: the sweep order does not fit the problem"));
     LevelVector      whole = gathered.gather(x), x_old(x);
     const MPI_Comm   comm  = distributed.get_communicator();
     for (;;)
@@ -25,7 +27,7 @@ namespace FoslsContact
           {
             const auto &qp = gathered.qp();
             const auto &A  = qp.matrix;
-            for (types::global_dof_index i = 0; i < whole.size(); ++i)
+            for (const types::global_dof_index i : order)
               {
                 if (qp.role[i] == DoFRole::fixed)
                   continue;

@@ -7,20 +7,26 @@
 # constraints and the patch colors per level are the same, the run is
 # monotone (energy_increases == 0) and every iterate feasible.
 # The cases cover what differs between process counts:
-#  - the square (one coarse cell: the DoF numbering of p4est is the same for
-#    any process count), default solver, 5 levels, 1/2/4 processes;
-#  - the half disc (many coarse cells: the numbering, and so the order of
-#    every sum, differs between process counts), default solver with 3
+#  - the square (one coarse cell), default solver, 5 levels, 1/2/4
+#    processes;
+#  - the half disc (many coarse cells), default solver with 3
 #    levels, and the paper's plain cycle with 2 levels, whose flux
 #    rerouting reads operator entries of other processes, 1/2/3 processes;
 #  - the 3D cube, default solver, 3 levels, 1/2/4 processes;
 #  - the reference solvers on the square: active set + KLU (a distributed
 #    Trilinos matrix), and 100 sweeps of projected Gauss-Seidel (gathered on
-#    the first process: the sweeps are those of one process).
-# Measured (Nov 2026): the iteration counts are equal in every case; the
-# forces agree to the last bit on the square and for projected
-# Gauss-Seidel, to 4e-12 on the cube and with the active set solver, and
-# to 2e-11 to 3.5e-11 on the half disc (where the numbering differs). Only the one-process counts are printed
+#    the first process and swept in the order of the support points,
+#    Discretization::sweep_order(): the sweeps are those of one process).
+# Every level's DoFs are numbered by their support points within each
+# process's owned range (Discretization::renumber_level), so the numbering,
+# and with it the order of every sum, differs between process counts.
+# Measured (Nov 2026, with that numbering; the forces as printed in
+# summary.json, 12 digits): the iteration counts are equal in every case;
+# the forces agree to every printed digit on the square with 2 processes,
+# for projected Gauss-Seidel and with the active set solver, to 4e-12 on
+# the square with 4 processes and on the cube, to 7e-12 and 4e-11 with
+# the plain cycle on the half disc and to 3e-11 and 7e-11 with the default
+# solver there (2 and 3 processes). Only the one-process counts are printed
 # (those of N processes are asserted), so the output does not depend on
 # round-off.
 import sys

@@ -185,10 +185,11 @@ solve_gauss_seidel(const unsigned int levels,
          excess = std::numeric_limits<double>::max();
   bool         decreasing = true, monotone = true;
   unsigned int energy_increases = 0, iterations = 0;
+  const auto order = p.discretization.sweep_order(p.discretization.finest_level());
   for (unsigned int b = 0; b < n_batches; ++b)
     {
       Monitor monitor(qp, solver_parameters, quiet, "projected gauss seidel");
-      ProjectedGaussSeidel().solve(qp, x, monitor);
+      ProjectedGaussSeidel(order).solve(qp, x, monitor);
       energy_increases += monitor.energy_increases();
       iterations += monitor.iterations();
       const auto &history = monitor.get_history();

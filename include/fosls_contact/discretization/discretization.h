@@ -14,6 +14,7 @@
 #include <fosls_contact/qp/matrix_entry_import.h>
 #include <fosls_contact/scene/scene.h>
 
+#include <array>
 #include <map>
 #include <set>
 
@@ -216,10 +217,39 @@ namespace FoslsContact
     /** x_rotated = R^{-1} x_cartesian on level @p l (all local entries). */
     void rotate_to_normal_tangential(const unsigned int l, LevelVector &x) const;
 
+    /**
+     * The DoFs of level @p l in the order of their support points, base
+     * element and component over all processes (the numbering of one
+     * process): on process 0 their global indices in that order, empty
+     * elsewhere. A method that sweeps in this order does the same on any
+     * number of processes (ProjectedGaussSeidel). Collective.
+     */
+    std::vector<types::global_dof_index> sweep_order(const unsigned int l) const;
+
     /** The Householder reflection H with H e_1 = n (paper section 4.3). */
     static FullMatrix<double> householder(const Tensor<1, dim> &n);
 
   private:
+    /**
+     * The owned DoFs of level @p l by the position of their support points
+     * (the vertex, the face center) in lexicographic order, x first, then
+     * by base element and component: the DoF's global index after the
+     * key of dim + 2 numbers. Geometry only, so the same on any number of
+     * processes.
+     */
+    std::vector<std::array<double, dim + 3>> owned_dof_keys(const unsigned int l) const;
+    /**
+     * Renumber the DoFs of level @p l, within each process's owned range,
+     * in the order of owned_dof_keys(). The patch smoother sweeps the
+     * vertices of one kind in that order (MultilevelHierarchy:
+     * VertexKey), so the values a patch gathers and those of the next
+     * patches lie next to each other in memory; p4est numbers them in the
+     * cells' Z-order, which puts a vertex's neighbours above and below it
+     * far apart. With one process this numbering is the order of the keys
+     * over the whole level; with several, each process's range is, so the
+     * numbering depends on the partition (see sweep_order()).
+     */
+    void renumber_level(const unsigned int l);
     void setup_level(const unsigned int l);
     /** x <- R x (or R^{-1} x) block by block on level @p l. */
     void apply_rotations(const unsigned int l,

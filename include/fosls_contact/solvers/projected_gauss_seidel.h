@@ -10,13 +10,29 @@ namespace FoslsContact
    * classic baseline whose rate deteriorates as h -> 0 (paper section 4.2).
    * Each coordinate step minimizes J exactly along e_i within the bounds,
    * so J never increases.
+   *
+   * The sweep is sequential, on the first process (the baseline, meant
+   * for one process), in the order of Discretization::sweep_order(): the
+   * DoFs by their support points, the numbering of one process, so that
+   * the sweep is the same on any number of processes.
    */
   class ProjectedGaussSeidel : public QPSolver
   {
   public:
+    /**
+     * @p order: on process 0 the global indices of all DoFs in the order
+     * of the sweep (Discretization::sweep_order()), ignored elsewhere.
+     */
+    explicit ProjectedGaussSeidel(std::vector<types::global_dof_index> order)
+      : order(std::move(order))
+    {}
+
     void solve(const ConstrainedQP &qp,
                LevelVector &        x,
                Monitor &            monitor) override;
+
+  private:
+    std::vector<types::global_dof_index> order;
   };
 } // namespace FoslsContact
 

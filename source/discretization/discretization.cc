@@ -114,8 +114,9 @@ namespace FoslsContact
   Discretization<dim>::renumber_level(const unsigned int l)
   {
     // Measured by hand (binaries alternated, the fastest of 3 runs, time
-    // per cycle per DoF on the square): levels 8 and 9 7% faster with one
-    // thread and 6% with two, levels 5-7 within 3%.
+    // per cycle per DoF on the square, 1 thread): level 8 0.917 -> 0.864,
+    // level 9 0.995 -> 0.919 us, levels 5 and 7 within 2.5%; session 13
+    // measured 6% on levels 8-9 with 2 threads.
     const IndexSet &                     owned = dof_handler.locally_owned_mg_dofs(l);
     const auto                           keys  = owned_dof_keys(l);
     std::vector<types::global_dof_index> new_numbers(owned.n_elements());

@@ -231,11 +231,11 @@ namespace FoslsContact
 
   private:
     /**
-     * The owned DoFs of level @p l by the position of their support points
-     * (the vertex, the face center) in lexicographic order, x first, then
-     * by base element and component: the DoF's global index after the
-     * key of dim + 2 numbers. Geometry only, so the same on any number of
-     * processes.
+     * The owned DoFs of level @p l sorted by their keys: the position of
+     * the support point (the vertex, the face center; x first), the base
+     * element and the component (dim + 2 numbers), followed by the DoF's
+     * global index. The keys are geometry only, so the same on any number
+     * of processes.
      */
     std::vector<std::array<double, dim + 3>> owned_dof_keys(const unsigned int l) const;
     /**

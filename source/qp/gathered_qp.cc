@@ -29,6 +29,47 @@ namespace FoslsContact
   }
 
 
+  void
+  assemble_gathered_entries(const std::vector<std::vector<std::array<double, 3>>> &parts,
+                            const types::global_dof_index                           n,
+                            SparsityPattern &                                       pattern,
+                            SparseMatrix<double> *                                  matrix)
+  {
+    DynamicSparsityPattern dsp(n, n);
+    for (const auto &part : parts)
+      for (const auto &[i, j, value] : part)
+        dsp.add(types::global_dof_index(i), types::global_dof_index(j));
+    pattern.copy_from(dsp);
+    if (matrix == nullptr)
+      return;
+    matrix->reinit(pattern);
+    for (const auto &part : parts)
+      for (const auto &[i, j, value] : part)
+        matrix->set(types::global_dof_index(i), types::global_dof_index(j), value);
+  }
+
+
+  std::vector<unsigned int>
+  owned_roles(const std::vector<DoFRole> &role, const unsigned int n_owned)
+  {
+    std::vector<unsigned int> roles(n_owned);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      roles[i] = static_cast<unsigned int>(role[i]);
+    return roles;
+  }
+
+
+  std::vector<DoFRole>
+  gathered_roles(const std::vector<std::vector<unsigned int>> &parts)
+  {
+    std::vector<DoFRole> roles;
+    for (const auto &part : parts)
+      for (const auto r : part)
+        roles.push_back(static_cast<DoFRole>(r));
+    return roles;
+  }
+
+
   GatheredQP::GatheredQP(const ConstrainedQP &qp)
     : comm(qp.get_communicator())
     , holder(Utilities::MPI::this_mpi_process(comm) == 0)
@@ -45,43 +86,22 @@ namespace FoslsContact
     auto collect = [&](const auto &mine) { return Utilities::MPI::gather(comm, mine, 0); };
     const auto matrix_parts   = collect(owned_entries(qp.matrix.get_sparsity_pattern(), &qp.matrix, p));
     const auto coupling_parts = collect(owned_entries(*qp.coupling_sparsity, nullptr, p));
-    std::vector<unsigned int> roles;
-    for (unsigned int i = 0; i < p.locally_owned_size(); ++i)
-      roles.push_back(static_cast<unsigned int>(qp.role[i]));
-    const auto role_parts = collect(roles);
+    const auto role_parts = collect(owned_roles(qp.role, p.locally_owned_size()));
     const LevelVector b = gather(qp.rhs), fixed = gather(qp.fixed_values),
                       ub = gather(qp.upper_bounds);
     if (!holder)
       return;
 
     const auto n = p.size();
-    {
-      DynamicSparsityPattern dsp(n, n);
-      for (const auto &part : matrix_parts)
-        for (const auto &[i, j, value] : part)
-          dsp.add(types::global_dof_index(i), types::global_dof_index(j));
-      serial.sparsity.copy_from(dsp);
-      serial.matrix.reinit(serial.sparsity);
-      for (const auto &part : matrix_parts)
-        for (const auto &[i, j, value] : part)
-          serial.matrix.set(types::global_dof_index(i), types::global_dof_index(j), value);
-    }
-    {
-      DynamicSparsityPattern dsp(n, n);
-      for (const auto &part : coupling_parts)
-        for (const auto &[i, j, value] : part)
-          dsp.add(types::global_dof_index(i), types::global_dof_index(j));
-      coupling.copy_from(dsp);
-    }
+    assemble_gathered_entries(matrix_parts, n, serial.sparsity, &serial.matrix);
+    assemble_gathered_entries(coupling_parts, n, coupling, nullptr);
     serial.coupling_sparsity = &coupling;
     serial.rhs               = b;
     serial.fixed_values      = fixed;
     serial.upper_bounds      = ub;
     serial.constant          = qp.constant;
     serial.dimension         = qp.dimension;
-    for (const auto &part : role_parts)
-      for (const auto r : part)
-        serial.role.push_back(static_cast<DoFRole>(r));
+    serial.role              = gathered_roles(role_parts);
   }
 
 

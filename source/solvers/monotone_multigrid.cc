@@ -1,6 +1,5 @@
 #include <fosls_contact/qp/gathered_qp.h>
 #include <fosls_contact/solvers/active_set_direct.h>
-#include <fosls_contact/solvers/box_qp.h>
 #include <fosls_contact/solvers/coarse_obstacles.h>
 #include <fosls_contact/solvers/monotone_multigrid.h>
 
@@ -367,10 +366,9 @@ namespace FoslsContact
     const auto     n_owned     = partitioner.locally_owned_size();
     if (&A != coarse_matrix || version[l] != coarse_version)
       {
-        // factorize once per coarse operator: it changes only with the
-        // truncation, while the W-cycles of a Newton step visit it
-        // hundreds of times (measured on the half disc, 4 levels: 1700
-        // coarse solves, 31 ms each when factorized every time)
+        // set up once per coarse operator (DenseCoarseSolver): it changes
+        // only with the truncation, while the W-cycles of a Newton step
+        // visit it hundreds of times
         coarse_matrix  = &A;
         coarse_version = version[l];
         // the owned part of each process, three values per DoF: the whole
@@ -391,26 +389,12 @@ namespace FoslsContact
           }
         else
           {
-            const auto mine = owned_entries(A.get_sparsity_pattern(), &A, partitioner);
-            std::vector<unsigned int> my_roles;
-            for (unsigned int i = 0; i < n_owned; ++i)
-              my_roles.push_back(static_cast<unsigned int>(role[i]));
-            DynamicSparsityPattern dsp(n, n);
-            const auto             all_entries = gather_all(comm, mine);
-            for (const auto &part : all_entries)
-              for (const auto &[i, j, value] : part)
-                dsp.add(types::global_dof_index(i), types::global_dof_index(j));
-            coarse_sparsity_global.copy_from(dsp);
-            coarse_matrix_global.reinit(coarse_sparsity_global);
-            for (const auto &part : all_entries)
-              for (const auto &[i, j, value] : part)
-                coarse_matrix_global.set(types::global_dof_index(i),
-                                         types::global_dof_index(j),
-                                         value);
-            coarse_role_global.clear();
-            for (const auto &part : gather_all(comm, my_roles))
-              for (const auto x : part)
-                coarse_role_global.push_back(static_cast<DoFRole>(x));
+            assemble_gathered_entries(
+              gather_all(comm, owned_entries(A.get_sparsity_pattern(), &A, partitioner)),
+              n,
+              coarse_sparsity_global,
+              &coarse_matrix_global);
+            coarse_role_global = gathered_roles(gather_all(comm, owned_roles(role, n_owned)));
             coarse_global = &coarse_matrix_global;
           }
 
@@ -424,18 +408,17 @@ namespace FoslsContact
               position[i] = coarse_dofs.size();
               coarse_dofs.push_back(i);
             }
-        coarse_cholesky_state = CholeskyState::none;
-        coarse_qp_ready       = false;
         if (coarse_dofs.size() <= 2000)
           {
             const unsigned int m = coarse_dofs.size();
-            coarse_dense.reinit(m, m);
+            FullMatrix<double> dense(m, m);
             for (unsigned int a = 0; a < m; ++a)
               for (auto e = coarse_global->begin(coarse_dofs[a]);
                    e != coarse_global->end(coarse_dofs[a]);
                    ++e)
                 if (position[e->column()] != numbers::invalid_unsigned_int)
-                  coarse_dense(a, position[e->column()]) = e->value();
+                  dense(a, position[e->column()]) = e->value();
+            coarse_dense_solver.reinit(dense);
           }
       }
     const auto &       dofs = coarse_dofs;
@@ -494,51 +477,7 @@ namespace FoslsContact
                      std::max(0., ub_all[dofs[a]] - v_all[dofs[a]]) :
                      std::numeric_limits<double>::infinity();
           }
-        // Without a finite obstacle (the linear cycle's visits) the problem
-        // is linear: the Cholesky factor of the operator, made once per
-        // operator. On the square's level 2 (100 DoFs that move) it took
-        // about 0.1 ms where the inverse of BoxQP took 0.65 ms, by hand,
-        // and a visit costs about the same (two triangular solves instead
-        // of one product with the inverse); the square's level-5 solve
-        // makes it once.
-        const bool linear = std::all_of(s.begin(), s.end(), [](const double bound) {
-          return bound == std::numeric_limits<double>::infinity();
-        });
-        if (linear && coarse_cholesky_state == CholeskyState::none)
-          {
-            coarse_cholesky.reinit(n);
-            coarse_cholesky = coarse_dense;
-            coarse_cholesky.set_property(LAPACKSupport::symmetric);
-            try
-              {
-                coarse_cholesky.compute_cholesky_factorization();
-                coarse_cholesky_state = CholeskyState::factorized;
-              }
-            catch (const ExceptionBase &)
-              {
-                // (positive definite in exact arithmetic, but a pivot
-                // came out <= 0: the BoxQP's Gauss-Jordan inverse below)
-                coarse_cholesky_state = CholeskyState::refused;
-              }
-          }
-        if (linear && coarse_cholesky_state == CholeskyState::factorized)
-          {
-            c = g;
-            coarse_cholesky.solve(c);
-            work.at_bound.assign(n, false);
-          }
-        else
-          {
-            if (!coarse_qp_ready)
-              {
-                coarse_qp       = BoxQP(coarse_dense);
-                coarse_qp_ready = true;
-              }
-            // (the pointer version: where no bound is reached, one product
-            // with the inverse, without the objective's second product,
-            // which is not needed here)
-            coarse_qp.solve(g.begin(), s.begin(), c.begin(), work.at_bound);
-          }
+        coarse_dense_solver.solve(g, s, c, work.at_bound);
         for (unsigned int a = 0; a < n; ++a)
           v_all[dofs[a]] = work.at_bound[a] ? ub_all[dofs[a]] : v_all[dofs[a]] + c[a];
       }

@@ -17,6 +17,25 @@ namespace FoslsContact
                 const Utilities::MPI::Partitioner &partitioner);
 
   /**
+   * @p pattern (and, if given, @p matrix on it) of size @p n from the
+   * entries of owned_entries() gathered from every process (one part per
+   * process): what a process needs to work on a whole matrix alone.
+   */
+  void
+  assemble_gathered_entries(const std::vector<std::vector<std::array<double, 3>>> &parts,
+                            const types::global_dof_index                           n,
+                            SparsityPattern &                                       pattern,
+                            SparseMatrix<double> *                                  matrix);
+
+  /** The roles of the first @p n_owned DoFs, as integers to gather. */
+  std::vector<unsigned int>
+  owned_roles(const std::vector<DoFRole> &role, const unsigned int n_owned);
+
+  /** The parts of owned_roles() gathered from every process, in order. */
+  std::vector<DoFRole>
+  gathered_roles(const std::vector<std::vector<unsigned int>> &parts);
+
+  /**
    * A ConstrainedQP gathered in global numbering on the first process, as
    * a problem of that process alone (MPI_COMM_SELF):
    * for what works on the whole matrix at once and is meant for one

@@ -1,14 +1,13 @@
 #ifndef fosls_contact_solvers_monotone_multigrid_h
 #define fosls_contact_solvers_monotone_multigrid_h
 
-#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
 #include <fosls_contact/discretization/level_transfer.h>
 #include <fosls_contact/qp/matrix_entry_import.h>
 #include <fosls_contact/parameters.h>
-#include <fosls_contact/solvers/box_qp.h>
+#include <fosls_contact/solvers/dense_coarse_solver.h>
 #include <fosls_contact/solvers/galerkin_product.h>
 #include <fosls_contact/solvers/multilevel_hierarchy.h>
 #include <fosls_contact/solvers/patch_smoother.h>
@@ -324,25 +323,10 @@ namespace FoslsContact
     /**
      * The coarsest problem in global numbering (coarse_global: the level's
      * own matrix on one process, else coarse_matrix_global, gathered on
-     * every process), its dense matrix on the DoFs that move
-     * (coarse_dense, up to 2000 of them) and, made when first needed for
-     * this operator, its factorizations: the Cholesky factor for a visit
-     * without a finite obstacle (the linear cycle's), a BoxQP (the inverse)
-     * for one with finite obstacles (on the square's level 2 the factor
-     * took about 0.1 ms, the inverse 0.65 ms, by hand); a factor that
-     * LAPACK refuses (not positive definite in floating point) leaves such
-     * visits to the BoxQP.
+     * every process), and the exact solver of its dense matrix on the DoFs
+     * that move (coarse_dofs, up to 2000 of them).
      */
-    FullMatrix<double>                                 coarse_dense;
-    LAPACKFullMatrix<double>                           coarse_cholesky;
-    BoxQP                                              coarse_qp;
-    enum class CholeskyState : unsigned char
-    {
-      none,
-      factorized,
-      refused
-    } coarse_cholesky_state = CholeskyState::none;
-    bool coarse_qp_ready    = false;
+    DenseCoarseSolver                                  coarse_dense_solver;
     std::vector<types::global_dof_index>               coarse_dofs;
     SparsityPattern                                    coarse_sparsity_global;
     SparseMatrix<double>                               coarse_matrix_global;

@@ -38,6 +38,12 @@ namespace FoslsContact
   private:
     void setup();
     void assemble();
+    /**
+     * Refuse boundary conditions that leave a rigid motion free: the
+     * functional is then only semidefinite, the coarsest level singular
+     * and the iterates drift along the motion.
+     */
+    void check_rigid_motions();
     void check_definiteness();
     void make_initial_guess();
     void setup_solver();

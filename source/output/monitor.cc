@@ -111,12 +111,16 @@ namespace FoslsContact
         // since it last changed. (Measured on the half disc, 4 levels: with
         // the mean rate of the nonlinear phase the run stopped after 2
         // iterations at 10 times the converged J.)
+        // (rho is not capped below 1: with a cap of 0.95 a method slower
+        // than that would stop too early; projected Gauss-Seidel, whose
+        // rate is not steady, is refused this criterion, see
+        // Parameters::Solver)
         double rho = 0.;
         for (unsigned int k = active_set_changed_at + 1; k < history.size(); ++k)
           rho = std::max(rho, history[k].rate);
-        rho = std::min(std::max(rho, 0.05), 0.95);
+        rho = std::max(rho, 0.05);
         const double algebraic = r.correction * rho / (1. - rho) / std::sqrt(2.);
-        stop |= history.size() > 2 && active_set_changed_at < r.iteration &&
+        stop |= history.size() > 2 && active_set_changed_at < r.iteration && rho < 1. &&
                 algebraic <= parameters.discretization_fraction *
                                std::sqrt(std::max(r.functional.total, 0.));
       }

@@ -66,4 +66,48 @@ namespace FoslsContact
         std::min(result.min_relative_eigenvalue, eigenvalues[i]);
     return result;
   }
+
+
+  double
+  DefinitenessCheck::least_mode_energy(const ConstrainedQP &     qp,
+                                       std::vector<LevelVector> &modes,
+                                       Vector<double> &          coefficients)
+  {
+    const unsigned int k = modes.size();
+    const auto &       A = qp.matrix;
+    LevelVector        diagonal = qp.new_vector();
+    for (unsigned int i = 0; i < qp.n_owned(); ++i)
+      diagonal.local_element(i) = A.diag_element(i);
+    for (auto &mode : modes)
+      for (unsigned int i = 0; i < qp.role.size(); ++i)
+        if (qp.role[i] == DoFRole::fixed)
+          mode.local_element(i) = 0;
+    LAPACKFullMatrix<double> G(k, k), M(k, k);
+    LevelVector              product = qp.new_vector();
+    for (unsigned int a = 0; a < k; ++a)
+      {
+        vmult(A, product, modes[a]);
+        for (unsigned int b = 0; b < k; ++b)
+          G(a, b) = modes[b] * product;
+        product = modes[a];
+        product.scale(diagonal);
+        for (unsigned int b = 0; b < k; ++b)
+          M(a, b) = modes[b] * product;
+      }
+    for (unsigned int a = 0; a < k; ++a)
+      for (unsigned int b = 0; b < a; ++b)
+        {
+          G(a, b) = G(b, a) = 0.5 * (G(a, b) + G(b, a));
+          M(a, b) = M(b, a) = 0.5 * (M(a, b) + M(b, a));
+        }
+    std::vector<Vector<double>> eigenvectors(k, Vector<double>(k));
+    G.compute_generalized_eigenvalues_symmetric(M, eigenvectors);
+    unsigned int least = 0;
+    for (unsigned int a = 1; a < k; ++a)
+      if (G.eigenvalue(a).real() < G.eigenvalue(least).real())
+        least = a;
+    coefficients = eigenvectors[least];
+    coefficients /= coefficients.linfty_norm();
+    return G.eigenvalue(least).real();
+  }
 } // namespace FoslsContact

@@ -47,9 +47,24 @@ namespace FoslsContact
         AssertThrow(pair.size() == 2,
                     ExcMessage("parameter 'Data/Constants' has entry '" + entry +
                                "'; expected name=value"));
+        // (muparser crashes on a constant named like a variable, or with a
+        // name that is not an identifier)
+        const std::string name     = Utilities::trim(pair[0]);
+        const bool        is_name  = !name.empty() &&
+                             (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') &&
+                             std::all_of(name.begin(), name.end(), [](const char c) {
+                               return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+                             });
+        const bool        variable = name == "x" || name == "y" || (dim == 3 && name == "z");
+        AssertThrow(is_name && !variable && constants.count(name) == 0,
+                    ExcMessage("parameter 'Data/Constants' has entry '" + entry + "': '" + name +
+                               (variable         ? "' is a coordinate variable" :
+                                !is_name         ? "' is not a name (letters, digits, _)" :
+                                name == "pi"     ? "' is predefined" :
+                                                   "' is defined twice")));
         try
           {
-            constants[pair[0]] = Utilities::string_to_double(pair[1]);
+            constants[name] = Utilities::string_to_double(pair[1]);
           }
         catch (...)
           {

@@ -383,7 +383,10 @@ namespace FoslsContact
         for (unsigned int a = 0; a < n; ++a)
           {
             gc += g[a] * c[a];
-            feasible &= c[a] <= s[a];
+            // (a NaN correction counts as feasible: only a patch with a
+            // bounded DoF has a BoxQP, and the monitor stops a run whose
+            // iterate is not finite)
+            feasible &= !(c[a] > s[a]);
           }
         double change = -0.5 * gc;
         if (feasible)

@@ -15,7 +15,9 @@ namespace FoslsContact
    * A_II is (it is: plain FOSLS with a Dirichlet part) and the Schur
    * complement S = A_CC - A_CI A_II^{-1} A_IC is. S is small and dense: it
    * costs one sparse factorization and |C| solves. It runs on a problem of
-   * one process (a GatheredQP).
+   * one process (a GatheredQP). The premise that A_II is definite fails
+   * where the boundary conditions leave a rigid motion free:
+   * least_mode_energy() checks that first.
    */
   struct DefinitenessCheck
   {
@@ -25,6 +27,22 @@ namespace FoslsContact
     bool         definite() const { return min_relative_eigenvalue > 0; }
 
     static DefinitenessCheck run(const ConstrainedQP &qp);
+
+    /**
+     * The least energy of a combination of @p modes, relative to its
+     * diagonal part: min over c of (R c)^T A (R c) / (R c)^T D (R c), with
+     * R the modes (set to 0 at the fixed DoFs here), D = diag(A), and
+     * @p coefficients the minimizing c (normalized to a largest entry of
+     * 1 in absolute value). For the rigid motions (displacement a
+     * translation or rotation, stress 0) the functional's quadratic form
+     * vanishes, so where no fixed DoF holds a combination of them the
+     * quotient is round-off (and A singular: the minimizer is not
+     * unique); one held by a Dirichlet boundary costs the energy of the
+     * boundary layer where it is cut off, O(h) relative. Collective.
+     */
+    static double least_mode_energy(const ConstrainedQP &     qp,
+                                    std::vector<LevelVector> &modes,
+                                    Vector<double> &          coefficients);
   };
 } // namespace FoslsContact
 

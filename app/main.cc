@@ -198,6 +198,9 @@ main(int argc, char *argv[])
             }
           else
             {
+              AssertThrow(arg.empty() || arg[0] != '-',
+                          dealii::ExcMessage("unknown option '" + arg +
+                                             "' (options: --set, --print-parameters, --help)"));
               AssertThrow(file.empty(),
                           dealii::ExcMessage("more than one parameter file "
                                              "given ('" + file + "', '" + arg +
@@ -209,6 +212,8 @@ main(int argc, char *argv[])
                   dealii::ExcMessage("no parameter file given; usage: "
                                      "fosls-contact SCENE.prm [--set "
                                      "\"Section/Name=value\" ...]"));
+      AssertThrow(!std::filesystem::is_directory(file),
+                  dealii::ExcMessage("parameter file '" + file + "' is a directory"));
       AssertThrow(std::filesystem::is_regular_file(file),
                   dealii::ExcMessage("parameter file '" + file +
                                      "' does not exist"));

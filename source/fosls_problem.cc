@@ -113,6 +113,56 @@ namespace FoslsContact
 
   template <int dim>
   void
+  FoslsProblem<dim>::check_data()
+  {
+    // The data enter the problem as fixed values (Dirichlet values at the
+    // vertices, tractions at the faces), bounds (the gap at the contact
+    // vertices) and the right-hand side (the body force); a data
+    // expression that is NaN or Inf somewhere shows there, and is named
+    // here instead of as a NaN iterate later.
+    const auto &       fine = discretization->level(discretization->finest_level());
+    std::vector<bool>  displacement(fine.n_local(), false);
+    for (const auto &[vertex, dofs] : fine.vertex_dofs)
+      for (const auto dof : dofs)
+        displacement[dof] = true;
+    enum : unsigned int
+    {
+      dirichlet = 1,
+      traction  = 2,
+      gap       = 4,
+      load      = 8
+    };
+    unsigned int bad = 0;
+    for (unsigned int i = 0; i < qp.n_owned(); ++i)
+      {
+        if (qp.role[i] == DoFRole::fixed && !std::isfinite(qp.fixed_values.local_element(i)))
+          bad |= displacement[i] ? dirichlet : traction;
+        if (qp.role[i] == DoFRole::bounded && !std::isfinite(qp.upper_bounds.local_element(i)))
+          bad |= gap;
+        if (!std::isfinite(qp.rhs.local_element(i)))
+          bad |= load;
+      }
+    if (!std::isfinite(qp.constant))
+      bad |= load;
+    // (every process takes the same decision)
+    for (unsigned int flag = 1; flag <= load; flag *= 2)
+      if (Utilities::MPI::max(bad & flag, discretization->get_communicator()) != 0)
+        bad |= flag;
+    const std::string what = (bad & dirichlet) ? "Data/Dirichlet values" :
+                             (bad & traction)  ? "Data/Traction" :
+                             (bad & gap)       ? "Data/Gap" :
+                                                 "Data/Body force";
+    AssertThrow(bad == 0,
+                ExcMessage("parameter '" + what + "' is not finite (NaN or Inf) " +
+                           ((bad & dirichlet) ? "at a vertex of the Dirichlet boundary" :
+                            (bad & traction)  ? "on a face of the Neumann boundary" :
+                            (bad & gap)       ? "at a vertex of the contact boundary" :
+                                                "somewhere in the body")));
+  }
+
+
+  template <int dim>
+  void
   FoslsProblem<dim>::check_rigid_motions()
   {
     // The rigid motions: translations and rotations about the centre of
@@ -290,7 +340,11 @@ namespace FoslsContact
     if (start)
       x = *start;
     ConditionalOStream quiet(std::cout, false);
-    Monitor            level_monitor(level_qp, parameters.solver, quiet, "level");
+    Monitor            level_monitor(level_qp,
+                                parameters.solver,
+                                quiet,
+                                "initial guess (the solution on level " +
+                                  std::to_string(level + 1) + ")");
     if (level == 0)
       ActiveSetDirect().solve(level_qp, x, level_monitor);
     else
@@ -349,6 +403,9 @@ namespace FoslsContact
                       solution.local_element(dofs[k]) = values[k];
                   }
             discretization->rotate_to_normal_tangential(L, solution);
+            AssertThrow(std::isfinite(solution.l2_norm()),
+                        ExcMessage("parameter 'Data/Initial displacement' is not finite (NaN "
+                                   "or Inf) at a vertex"));
             break;
           }
       }
@@ -512,6 +569,12 @@ namespace FoslsContact
     if (scene.has_exact_solution())
       {
         const ErrorNorms e = post.errors(cartesian);
+        AssertThrow(std::isfinite(e.u_l2) && std::isfinite(e.u_h1_semi),
+                    ExcMessage("parameter 'Data/Exact displacement' is not finite (NaN or Inf) "
+                               "somewhere on the mesh: its error norms are not finite"));
+        AssertThrow(std::isfinite(e.sigma_l2) && std::isfinite(e.sigma_div),
+                    ExcMessage("parameter 'Data/Exact stress' is not finite (NaN or Inf) "
+                               "somewhere on the mesh: its error norms are not finite"));
         summary["error_u_l2"]       = number(e.u_l2);
         summary["error_u_h1"]       = number(e.u_h1());
         summary["error_sigma_l2"]   = number(e.sigma_l2);
@@ -544,6 +607,7 @@ namespace FoslsContact
   {
     setup();
     assemble();
+    check_data();
     check_rigid_motions();
     check_definiteness();
     make_initial_guess();

@@ -219,7 +219,9 @@ namespace FoslsContact
                         "",
                         Patterns::Anything(),
                         "Named constants for all expressions, e.g. "
-                        "'push=0.01, R=0.5' (pi is always defined).");
+                        "'push=0.01, R=0.5' (pi is always defined). Names: letters, "
+                        "digits and _, not starting with a digit, not x, y (z in "
+                        "3D) and each once.");
       prm.declare_entry("Body force",
                         "",
                         Patterns::Anything(),
@@ -357,7 +359,9 @@ namespace FoslsContact
                         "tolerance: as above. discretization accuracy: stop when "
                         "the estimated algebraic error is below Discretization "
                         "fraction times the least-squares functional's "
-                        "estimate of the discretization error.");
+                        "estimate of the discretization error (not for projected "
+                        "Gauss-Seidel, whose rate is not steady enough for the "
+                        "estimate).");
       prm.declare_entry("Discretization fraction",
                         "0.1",
                         Patterns::Double(0, 1),
@@ -365,7 +369,8 @@ namespace FoslsContact
       prm.declare_entry("Pre smoothing",
                         "3",
                         Patterns::Integer(0, 100),
-                        "Forward patch sweeps before the coarse correction.");
+                        "Forward patch sweeps before the coarse correction (Pre and "
+                        "Post smoothing must not both be 0).");
       prm.declare_entry("Post smoothing",
                         "3",
                         Patterns::Integer(0, 100),

@@ -38,6 +38,8 @@ namespace FoslsContact
   private:
     void setup();
     void assemble();
+    /** Refuse data (Dirichlet values, traction, gap, body force) that are not finite. */
+    void check_data();
     /**
      * Refuse boundary conditions that leave a rigid motion free: the
      * functional is then only semidefinite, the coarsest level singular

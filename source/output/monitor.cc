@@ -58,7 +58,10 @@ namespace FoslsContact
     // Iterates never silently become NaN: stop the run with a message.
     AssertThrow(std::isfinite(r.functional.total) && std::isfinite(r.correction),
                 ExcMessage(solver_name + ": the iterate became NaN/Inf at "
-                           "iteration " + std::to_string(r.iteration)));
+                           "iteration " + std::to_string(r.iteration) +
+                           " (the data are finite, checked at the start: the problem is "
+                           "likely too badly scaled for double precision, e.g. a "
+                           "'Material/mu' far from 1 with these 'Functional weights')"));
     history.push_back(r);
     // (the active set changed if it changed on any process)
     if (Utilities::MPI::max(active != active_set ? 1u : 0u, qp.get_communicator()) == 1)

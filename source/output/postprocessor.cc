@@ -6,6 +6,7 @@
 #include <fosls_contact/assembly/fosls_assembler.h>
 #include <fosls_contact/output/postprocessor.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -399,6 +400,18 @@ namespace FoslsContact
       files.push_back("summary.json");
     }
 
+    // the solution files of an earlier run into this directory that this
+    // run does not replace (Write vtu = false, or more processes then)
+    // would be mistaken for this run's
+    for (const auto &entry : fs::directory_iterator(directory))
+      {
+        const std::string name = entry.path().filename().string();
+        if (entry.is_regular_file() && name.rfind("solution_", 0) == 0 &&
+            (name.size() > 4 && (name.substr(name.size() - 4) == ".vtu" ||
+                                 (name.size() > 5 && name.substr(name.size() - 5) == ".pvtu"))) &&
+            std::find(files.begin(), files.end(), name) == files.end())
+          fs::remove(entry.path());
+      }
     for (const auto &name : files)
       if (fs::exists(staging / name))
         fs::rename(staging / name, directory / name);

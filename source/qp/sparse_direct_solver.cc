@@ -5,6 +5,15 @@
 
 namespace FoslsContact
 {
+  namespace
+  {
+    const std::string singular_matrix_message =
+      "the sparse direct solver (Amesos KLU) found the matrix singular in floating point; "
+      "the usual cause is a 'Material/mu' far from 1 with these 'Functional weights' (the "
+      "constitutive term scales like 1/mu^2 against the equilibrium term: measured, mu = 1e7 "
+      "fails): scale the units so that mu is about 1";
+  } // namespace
+
   SparseDirectSolver::SparseDirectSolver()
     : control(1, 0)
   {}
@@ -39,8 +48,11 @@ namespace FoslsContact
         columns.clear();
         values.clear();
         for (auto e = A.begin(i); e != A.end(i); ++e)
-          // (deal.II's default drop tolerance of a matrix copy, on the values)
-          if (std::abs(e->value()) > 1e-13)
+          // (exact zeros only: the round-off entries are zero already,
+          // ConstrainedQP::compress_matrices(); an absolute drop tolerance of
+          // 1e-13 removed the constitutive couplings of mu = 1e7, whose
+          // compliance is 1/(2 mu), and KLU found the matrix singular)
+          if (e->value() != 0.)
             {
               columns.push_back(p->local_to_global(e->column()));
               values.push_back(e->value());
@@ -50,7 +62,16 @@ namespace FoslsContact
     matrix->compress(VectorOperation::insert);
     solver = std::make_unique<TrilinosWrappers::SolverDirect>(
       control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
-    solver->initialize(*matrix);
+    try
+      {
+        solver->initialize(*matrix);
+      }
+    catch (const ExceptionBase &)
+      {
+        // (deal.II's message is Trilinos' error number, -22: KLU found a
+        // zero pivot)
+        AssertThrow(false, ExcMessage(singular_matrix_message));
+      }
     x_t.reinit(owned, comm);
     b_t.reinit(owned, comm);
   }
@@ -63,7 +84,14 @@ namespace FoslsContact
     for (unsigned int i = 0; i < n; ++i)
       b_t[partitioner->local_to_global(i)] = b.local_element(i);
     b_t.compress(VectorOperation::insert);
-    solver->solve(x_t, b_t);
+    try
+      {
+        solver->solve(x_t, b_t);
+      }
+    catch (const ExceptionBase &)
+      {
+        AssertThrow(false, ExcMessage(singular_matrix_message));
+      }
     for (unsigned int i = 0; i < n; ++i)
       x.local_element(i) = x_t[partitioner->local_to_global(i)];
   }

@@ -146,9 +146,12 @@ namespace FoslsContact
                                     &monitor,
                                     qp.coupling_sparsity);
     AssertThrow(outcome != Outcome::cycling,
-                ExcMessage("active set: the primal-dual active set method "
-                           "cycles (an active set repeated); use Solver/Type "
-                           "= monotone multigrid"));
+                ExcMessage(monitor.name() +
+                           ": the primal-dual active set method cycles (an active set "
+                           "repeated); " +
+                           (monitor.name() == "active set" ?
+                              "use Solver/Type = monotone multigrid" :
+                              "use 'Solver/Initial guess' = zero")));
     if (outcome == Outcome::converged)
       monitor.set_converged();
   }

@@ -225,9 +225,10 @@ namespace FoslsContact
     AssertThrow(false,
                 ExcMessage("the boundary conditions leave a rigid motion free (" + free_modes +
                            ", relative energy " + number(energy) +
-                           "): the solution is not unique; prescribe it on some boundary "
-                           "('Boundary conditions/Dirichlet boundary ids' and 'Dirichlet "
-                           "components')"));
+                           "): the functional's quadratic form does not change along it "
+                           "and its matrix is singular, which contact, one-sided, does not "
+                           "cure; prescribe the motion on some boundary ('Boundary "
+                           "conditions/Dirichlet boundary ids' and 'Dirichlet components')"));
   }
 
 

@@ -210,13 +210,15 @@ namespace FoslsContact
           }
     for (auto &mode : modes)
       discretization->rotate_to_normal_tangential(L, mode);
-    Vector<double> coefficients;
-    const double   energy = DefinitenessCheck::least_mode_energy(qp, modes, coefficients);
     // free: round-off (measured: 7e-17 on the square with a roller on top,
     // 4e-16 on the cube held in z only); held: the energy of the cut-off
     // boundary layer, O(h) (measured: 3e-4 on the square's level 9, 2e-4 on
     // the half disc with 5 levels and Grading 3, 6e-3 on the cube's level 5)
-    if (energy > 1e-10)
+    const double   threshold = 1e-10;
+    Vector<double> coefficients;
+    const double   energy =
+      DefinitenessCheck::least_mode_energy(qp, modes, threshold, coefficients);
+    if (energy > threshold)
       return;
     std::string free_modes;
     for (unsigned int m = 0; m < names.size(); ++m)

@@ -34,6 +34,7 @@ namespace FoslsContact
       triangulation.copy_triangulation(coarse);
     }
     triangulation.refine_global(n_levels - 1);
+    scene.check_cell_shapes(triangulation, comm);
 
     dof_handler.reinit(triangulation);
     dof_handler.distribute_dofs(fe);

@@ -3,8 +3,29 @@
 
 #include <fosls_contact/qp/definiteness_check.h>
 
+#include <cmath>
+#include <limits>
+
 namespace FoslsContact
 {
+  namespace
+  {
+    /**
+     * The eigenvalues and eigenvectors of @p M after averaging away the
+     * round-off asymmetry of its entries.
+     */
+    void
+    symmetric_eigenpairs(LAPACKFullMatrix<double> &M,
+                         Vector<double> &          values,
+                         FullMatrix<double> &      vectors)
+    {
+      for (unsigned int r = 0; r < M.m(); ++r)
+        for (unsigned int c = 0; c < r; ++c)
+          M(r, c) = M(c, r) = 0.5 * (M(r, c) + M(c, r));
+      M.compute_eigenvalues_symmetric(-1e300, 1e300, 0., values, vectors);
+    }
+  } // namespace
+
   DefinitenessCheck
   DefinitenessCheck::run(const ConstrainedQP &qp)
   {
@@ -53,13 +74,9 @@ namespace FoslsContact
       for (unsigned int c = 0; c < nc; ++c)
         S(r, c) /= std::sqrt(A.diag_element(contact[r]) *
                              A.diag_element(contact[c]));
-    // symmetrize the round-off
-    for (unsigned int r = 0; r < nc; ++r)
-      for (unsigned int c = 0; c < r; ++c)
-        S(r, c) = S(c, r) = 0.5 * (S(r, c) + S(c, r));
     Vector<double> eigenvalues;
     FullMatrix<double> eigenvectors;
-    S.compute_eigenvalues_symmetric(-1e300, 1e300, 0., eigenvalues, eigenvectors);
+    symmetric_eigenpairs(S, eigenvalues, eigenvectors);
     result.min_relative_eigenvalue = eigenvalues.size() ? eigenvalues[0] : 1.;
     for (unsigned int i = 0; i < eigenvalues.size(); ++i)
       result.min_relative_eigenvalue =
@@ -71,6 +88,7 @@ namespace FoslsContact
   double
   DefinitenessCheck::least_mode_energy(const ConstrainedQP &     qp,
                                        std::vector<LevelVector> &modes,
+                                       const double              threshold,
                                        Vector<double> &          coefficients)
   {
     const unsigned int k = modes.size();
@@ -96,18 +114,60 @@ namespace FoslsContact
       }
     for (unsigned int a = 0; a < k; ++a)
       for (unsigned int b = 0; b < a; ++b)
+        G(a, b) = G(b, a) = 0.5 * (G(a, b) + G(b, a));
+    // The generalized problem G c = q M c, with M only semidefinite where
+    // the fixed DoFs hold a whole mode (every vertex of a one-cell mesh
+    // with Dirichlet sides): on the range of M, M = V L V^T, with
+    // W = V L^{-1/2}, the least eigenvalue of W^T G W (LAPACK's sygv
+    // refuses a singular M)
+    Vector<double>     m_values;
+    FullMatrix<double> m_vectors;
+    symmetric_eigenpairs(M, m_values, m_vectors);
+    double largest = 0;
+    for (unsigned int a = 0; a < m_values.size(); ++a)
+      largest = std::max(largest, m_values[a]);
+    std::vector<unsigned int> range;
+    for (unsigned int a = 0; a < m_values.size(); ++a)
+      if (m_values[a] > 1e-12 * largest)
+        range.push_back(a);
+    coefficients.reinit(k);
+    if (range.empty())
+      return std::numeric_limits<double>::infinity(); // no mode can move
+    const unsigned int r = range.size();
+    FullMatrix<double> W(k, r);
+    for (unsigned int a = 0; a < k; ++a)
+      for (unsigned int b = 0; b < r; ++b)
+        W(a, b) = m_vectors(a, range[b]) / std::sqrt(m_values[range[b]]);
+    LAPACKFullMatrix<double> H(r, r);
+    for (unsigned int a = 0; a < r; ++a)
+      for (unsigned int b = 0; b < r; ++b)
         {
-          G(a, b) = G(b, a) = 0.5 * (G(a, b) + G(b, a));
-          M(a, b) = M(b, a) = 0.5 * (M(a, b) + M(b, a));
+          double h = 0;
+          for (unsigned int i = 0; i < k; ++i)
+            for (unsigned int j = 0; j < k; ++j)
+              h += W(i, a) * G(i, j) * W(j, b);
+          H(a, b) = h;
         }
-    std::vector<Vector<double>> eigenvectors(k, Vector<double>(k));
-    G.compute_generalized_eigenvalues_symmetric(M, eigenvectors);
+    Vector<double>     h_values;
+    FullMatrix<double> h_vectors;
+    symmetric_eigenpairs(H, h_values, h_vectors);
     unsigned int least = 0;
-    for (unsigned int a = 1; a < k; ++a)
-      if (G.eigenvalue(a).real() < G.eigenvalue(least).real())
+    for (unsigned int a = 1; a < h_values.size(); ++a)
+      if (h_values[a] < h_values[least])
         least = a;
-    coefficients = eigenvectors[least];
-    coefficients /= coefficients.linfty_norm();
-    return G.eigenvalue(least).real();
+    // the modes in the combinations with an energy up to the threshold
+    // (several where more than one motion is free), or in the least one
+    for (unsigned int a = 0; a < h_values.size(); ++a)
+      if (a == least || h_values[a] <= threshold)
+        {
+          Vector<double> combination(k);
+          for (unsigned int i = 0; i < k; ++i)
+            for (unsigned int b = 0; b < r; ++b)
+              combination[i] += W(i, b) * h_vectors(b, a);
+          combination /= combination.linfty_norm();
+          for (unsigned int i = 0; i < k; ++i)
+            coefficients[i] = std::max(coefficients[i], std::abs(combination[i]));
+        }
+    return h_values[least];
   }
 } // namespace FoslsContact

@@ -31,9 +31,11 @@ namespace FoslsContact
     /**
      * The least energy of a combination of @p modes, relative to its
      * diagonal part: min over c of (R c)^T A (R c) / (R c)^T D (R c), with
-     * R the modes (set to 0 at the fixed DoFs here), D = diag(A), and
-     * @p coefficients the minimizing c (normalized to a largest entry of
-     * 1 in absolute value). For the rigid motions (displacement a
+     * R the modes (set to 0 at the fixed DoFs here) and D = diag(A);
+     * @p coefficients(i) is the largest |c_i| (each c scaled to a largest
+     * entry of 1) of the stationary combinations with an energy up to
+     * @p threshold, or of the least one: the modes that take part in a
+     * free motion. For the rigid motions (displacement a
      * translation or rotation, stress 0) the functional's quadratic form
      * vanishes, so where no fixed DoF holds a combination of them the
      * quotient is round-off (and A singular: the minimizer is not
@@ -42,6 +44,7 @@ namespace FoslsContact
      */
     static double least_mode_energy(const ConstrainedQP &     qp,
                                     std::vector<LevelVector> &modes,
+                                    const double              threshold,
                                     Vector<double> &          coefficients);
   };
 } // namespace FoslsContact

@@ -63,6 +63,13 @@ namespace FoslsContact
       return initial_u_function.get();
     }
 
+    /**
+     * Refuse a mesh with a cell whose corner has a Jacobian determinant
+     * <= 0 on any level (a graded half disc bent too far). Collective on
+     * @p comm.
+     */
+    void check_cell_shapes(const Triangulation<dim> &tria, const MPI_Comm comm) const;
+
     /** h_max / h_min of the coarse mesh, printed for graded meshes. */
     static double mesh_size_ratio(const Triangulation<dim> &triangulation);
 

@@ -2,7 +2,9 @@
 
 #include <fosls_contact/parameters.h>
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace FoslsContact
 {
@@ -290,8 +292,10 @@ namespace FoslsContact
                         "all",
                         Patterns::Anything(),
                         "'all' or a list of components (0 = x, 1 = y, 2 = z) "
-                        "prescribed on the Dirichlet ids; the other components "
-                        "get the traction of Data/Traction.");
+                        "prescribed on the Dirichlet ids, or per id as "
+                        "'id: components; ...' (e.g. '0: 0; 3: all'; ids not "
+                        "named: all); the other components get the traction "
+                        "of Data/Traction (a roller).");
       prm.declare_entry("Neumann boundary ids",
                         "",
                         Patterns::List(Patterns::Integer(0, 255)),
@@ -532,28 +536,68 @@ namespace FoslsContact
       solver.parse_parameters(prm);
       output.parse_parameters(prm);
 
-      auto &bc = boundary_conditions;
-      bc.dirichlet_components.assign(geometry.dimension, false);
-      if (bc.dirichlet_components_text == "all")
-        bc.dirichlet_components.assign(geometry.dimension, true);
+      // 'all', a component list for every Dirichlet id, or per id
+      // "id: components; id: components" (ids not named: all)
+      auto &     bc   = boundary_conditions;
+      const auto name = std::string("parameter 'Boundary conditions/Dirichlet components'");
+      auto       parse_mask = [&](const std::string &text) {
+        std::vector<bool> mask(geometry.dimension, text == "all");
+        if (text != "all")
+          for (const auto &c : Utilities::split_string_list(text, ','))
+            {
+              int k = -1;
+              try
+                {
+                  k = Utilities::string_to_int(c);
+                }
+              catch (...)
+                {}
+              AssertThrow(k >= 0 && k < static_cast<int>(geometry.dimension),
+                          ExcMessage(name + " has entry '" + c +
+                                     "'; valid: all, or components 0.." +
+                                     std::to_string(geometry.dimension - 1)));
+              mask[k] = true;
+            }
+        AssertThrow(std::find(mask.begin(), mask.end(), true) != mask.end(),
+                    ExcMessage(name + " = '" + text + "' prescribes no component"));
+        return mask;
+      };
+      bc.dirichlet_components.clear();
+      if (bc.dirichlet_components_text.find(':') == std::string::npos)
+        {
+          const auto mask = parse_mask(bc.dirichlet_components_text);
+          for (const unsigned int id : bc.dirichlet_ids)
+            bc.dirichlet_components[id] = mask;
+        }
       else
-        for (const auto &c :
-             Utilities::split_string_list(bc.dirichlet_components_text, ','))
-          {
-            int k = -1;
-            try
-              {
-                k = Utilities::string_to_int(c);
-              }
-            catch (...)
-              {}
-            AssertThrow(k >= 0 && k < static_cast<int>(geometry.dimension),
-                        ExcMessage("parameter 'Boundary conditions/Dirichlet "
-                                   "components' has entry '" + c +
-                                   "'; valid: all, or components 0.." +
-                                   std::to_string(geometry.dimension - 1)));
-            bc.dirichlet_components[k] = true;
-          }
+        {
+          for (const unsigned int id : bc.dirichlet_ids)
+            bc.dirichlet_components[id] = std::vector<bool>(geometry.dimension, true);
+          std::set<unsigned int> named;
+          for (const auto &entry : Utilities::split_string_list(bc.dirichlet_components_text, ';'))
+            {
+              const auto pair = Utilities::split_string_list(entry, ':');
+              int        id   = -1;
+              try
+                {
+                  if (pair.size() == 2)
+                    id = Utilities::string_to_int(pair[0]);
+                }
+              catch (...)
+                {}
+              AssertThrow(id >= 0,
+                          ExcMessage(name + " has entry '" + entry +
+                                     "'; expected 'id: components' (e.g. '0: 0; 3: all')"));
+              AssertThrow(bc.dirichlet_components.count(id),
+                          ExcMessage(name + " names boundary id " + std::to_string(id) +
+                                     ", which is not in 'Boundary conditions/Dirichlet "
+                                     "boundary ids'"));
+              AssertThrow(named.insert(id).second,
+                          ExcMessage(name + " names boundary id " + std::to_string(id) +
+                                     " twice"));
+              bc.dirichlet_components[id] = parse_mask(pair[1]);
+            }
+        }
     }
   } // namespace Parameters
 } // namespace FoslsContact

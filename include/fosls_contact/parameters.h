@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -95,12 +96,16 @@ namespace FoslsContact
      * Neumann and contact boundaries. Every boundary id of the mesh must be
      * named exactly once. On a Dirichlet id, the components not listed in
      * `Dirichlet components` get the traction of the Neumann data instead
-     * (a roller), component by component.
+     * (a roller), component by component. The components may differ per
+     * id ("0: 0; 3: all"): a symmetry plane beside a clamped side, whose
+     * rigid motions the clamped side fixes.
      */
     struct BoundaryConditions
     {
       std::vector<unsigned int> dirichlet_ids;
-      std::vector<bool>         dirichlet_components; ///< size dim, filled later
+      /// per Dirichlet id: which components are prescribed (size dim);
+      /// filled by AllParameters::parse_parameters, which knows dim
+      std::map<unsigned int, std::vector<bool>> dirichlet_components;
       std::string               dirichlet_components_text = "all";
       std::vector<unsigned int> neumann_ids;
       std::vector<unsigned int> contact_ids;

@@ -32,7 +32,7 @@ namespace FoslsContact
   template <int dim>
   Scene<dim>::Scene(const Parameters::AllParameters &prm)
     : geometry(prm.geometry)
-    , dirichlet_mask(prm.boundary_conditions.dirichlet_components)
+    , dirichlet_masks(prm.boundary_conditions.dirichlet_components)
   {
     const auto &bc = prm.boundary_conditions;
     dirichlet_ids.insert(bc.dirichlet_ids.begin(), bc.dirichlet_ids.end());

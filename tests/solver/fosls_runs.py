@@ -33,6 +33,14 @@ def check(condition, what):
     return condition
 
 
+def check_refused(run, what, pattern):
+    """A bad scene: exit code 1, one line on stderr containing @p pattern,
+    no summary.json."""
+    lines = run.stderr.strip().splitlines()
+    return check(run.returncode == 1 and len(lines) == 1 and pattern in lines[0]
+                 and not run.summary, what + ": one line naming it, exit code 1, no summary")
+
+
 def finish():
     """Exit with 1 if a check failed."""
     if _failures[0]:

@@ -72,14 +72,15 @@ test_tilted_scene(const std::string &                              file,
                   const std::string &                              normal,
                   const unsigned int                               n_levels,
                   const bool                                       box,
-                  std::vector<std::pair<std::string, std::string>> overrides = {})
+                  std::vector<std::pair<std::string, std::string>> overrides = {},
+                  const double                                     gap_shift = 0)
 {
   std::cout << "--- " << dim << "D, " << file << ", tilted obstacle, normal "
             << normal << (overrides.empty() ? "" : ", contact on the right side")
             << std::endl;
   overrides.emplace_back("Geometry/Levels", std::to_string(n_levels));
   overrides.emplace_back("Data/Obstacle normal", normal);
-  overrides.emplace_back("Data/Gap", "0.001*x");
+  overrides.emplace_back("Data/Gap", std::to_string(gap_shift) + " + 0.001*x");
   const auto parameters = make_parameters(scene_file(file), overrides);
   const Scene<dim>          scene(parameters);
   const Discretization<dim> discretization(scene, n_levels, MPI_COMM_WORLD);
@@ -249,7 +250,7 @@ test_tilted_scene(const std::string &                              file,
           max_vertex_error = std::max(max_vertex_error, (cv.normal - n_o).norm());
           vertex_roles_ok &= data.role[cv.normal_dof] == DoFRole::bounded &&
                              std::abs(data.upper_bounds.local_element(cv.normal_dof) -
-                                      0.001 * cv.point[0]) < 1e-15;
+                                      (gap_shift + 0.001 * cv.point[0])) < 1e-15;
           for (unsigned int k = 1; k < dim; ++k)
             vertex_roles_ok &= data.role[block.dofs[k]] == DoFRole::free;
           // u.n_o is the first rotated coordinate
@@ -312,6 +313,9 @@ main(int argc, char *argv[])
                        {{"Boundary conditions/Dirichlet boundary ids", "0"},
                         {"Boundary conditions/Neumann boundary ids", "2, 3"},
                         {"Boundary conditions/Contact boundary ids", "1"}});
-  test_tilted_scene<2>("hertz.prm", "0.3; -1", 2, false);
+  // The half disc's Dirichlet ends (0, -0.01) lie on the contact boundary:
+  // a gap of 0.001 x would put them into the obstacle, which Discretization
+  // refuses.
+  test_tilted_scene<2>("hertz.prm", "0.3; -1", 2, false, {}, 0.5);
   return exit_code();
 }

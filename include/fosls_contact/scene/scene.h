@@ -7,6 +7,7 @@
 
 #include <fosls_contact/parameters.h>
 
+#include <map>
 #include <memory>
 #include <set>
 
@@ -42,10 +43,10 @@ namespace FoslsContact
     bool is_dirichlet(const types::boundary_id id) const;
     bool is_neumann(const types::boundary_id id) const;
     bool is_contact(const types::boundary_id id) const;
-    /** Components of u prescribed on Dirichlet ids. */
-    const std::vector<bool> &dirichlet_components() const
+    /** Components of u prescribed on the Dirichlet id @p id. */
+    const std::vector<bool> &dirichlet_components(const types::boundary_id id) const
     {
-      return dirichlet_mask;
+      return dirichlet_masks.at(id);
     }
 
     const Function<dim> &body_force() const { return *body_force_function; }
@@ -82,7 +83,7 @@ namespace FoslsContact
     const Parameters::Geometry geometry;
     std::map<std::string, double> constants;
     std::set<types::boundary_id> dirichlet_ids, neumann_ids, contact_ids;
-    std::vector<bool> dirichlet_mask;
+    std::map<unsigned int, std::vector<bool>> dirichlet_masks;
 
     std::unique_ptr<FunctionParser<dim>> body_force_function;
     std::unique_ptr<FunctionParser<dim>> dirichlet_function;

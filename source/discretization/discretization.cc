@@ -77,6 +77,38 @@ namespace FoslsContact
 
 
   template <int dim>
+  FullMatrix<double>
+  Discretization<dim>::vertex_rotation(const Tensor<1, dim> &n)
+  {
+    if (dim == 1 || n[0] != 0.)
+      return householder(n);
+    // n _|_ e_1: columns n, sign(n_j) e_1 at j = argmax |n_j| and, in 3D,
+    // the unit part of e_k orthogonal to n at the other k. For n = +-e_j
+    // this is H(n); in general e_1, and every e_k with n_k = 0, is a column
+    // (H(n) would mix u_1 into every rotated coordinate).
+    unsigned int j = 1;
+    for (unsigned int k = 2; k < dim; ++k)
+      if (std::abs(n[k]) > std::abs(n[j]))
+        j = k;
+    FullMatrix<double> R(dim, dim);
+    for (unsigned int i = 0; i < dim; ++i)
+      R(i, 0) = n[i];
+    R(0, j) = (n[j] > 0 ? 1. : -1.);
+    for (unsigned int k = 1; k < dim; ++k)
+      if (k != j)
+        {
+          Tensor<1, dim> t;
+          t[k] = 1.;
+          t -= n[k] * n;
+          t /= t.norm();
+          for (unsigned int i = 0; i < dim; ++i)
+            R(i, k) = t[i];
+        }
+    return R;
+  }
+
+
+  template <int dim>
   std::vector<std::array<double, dim + 3>>
   Discretization<dim>::owned_dof_keys(const unsigned int l) const
   {
@@ -322,12 +354,12 @@ namespace FoslsContact
     // must not be prescribed into the obstacle, where u.n <= g cannot hold
     // (found by probing: a corner of the square with Dirichlet value
     // u_y = -0.01 and gap -0.02 kept a penetration of 0.03, silently).
-    // A roller vertex (u.n not prescribed) whose obstacle normal is +-e_j,
-    // j free, stays a contact vertex: H(+-e_j) is a signed permutation
-    // (rotated coordinate 0 = +-u_j, j = +-u_0, the others u_i), so its
-    // prescribed components stay fixed coordinates. Another roller vertex
-    // is refused: a box constraint cannot hold u.n <= g and a Cartesian
-    // component together.
+    // A roller vertex (u.n not prescribed) stays a contact vertex if n is
+    // orthogonal to its prescribed components: vertex_rotation(n) then has
+    // +-e_k as a column for each of them, so u_k is one rotated coordinate,
+    // fixed, beside the bounded u.n. Any other roller vertex is refused: a
+    // box constraint cannot hold u.n <= g and a Cartesian component
+    // together.
     double      penetration = 0;
     std::string unsupported;
     for (const auto &[vi, p] : contact_vertex_points)
@@ -345,47 +377,64 @@ namespace FoslsContact
         const double         gap  = scene.gap().value(p);
         scene.dirichlet_values().vector_value(p, values);
         bool   prescribed = true; // u.n: n has no part along a free component
+        bool   orthogonal = true; // n has no part along a prescribed one
         double normal_u   = 0;
         for (unsigned int k = 0; k < dim; ++k)
           {
             prescribed = prescribed && (mask[k] || n[k] == 0.);
+            orthogonal = orthogonal && (!mask[k] || n[k] == 0.);
             if (mask[k])
               normal_u += values[k] * n[k];
           }
         if (prescribed)
           {
-            if (normal_u - gap > 1e-12 * (std::abs(normal_u) + std::abs(gap)))
+            // (relative to 1 too: sin(pi) = 1.2e-16 against a gap of 0
+            // must pass)
+            if (normal_u - gap > 1e-12 * (1. + std::abs(normal_u) + std::abs(gap)))
               penetration = std::max(penetration, normal_u - gap);
             continue;
           }
-        unsigned int j = 0; // n = s e_j?
-        for (unsigned int k = 1; k < dim; ++k)
-          if (std::abs(n[k]) > std::abs(n[j]))
-            j = k;
-        const double s = n[j];
-        if (std::abs(s) != 1.)
+        // rotated coordinate i: free, or u_k = R(k, i) x_i fixed
+        const FullMatrix<double> R = vertex_rotation(n);
+        std::array<bool, dim>    fixed{};
+        for (unsigned int i = 0; i < dim; ++i)
+          data.fixed_values.local_element(dofs[i]) = 0.;
+        for (unsigned int k = 0; k < dim && orthogonal; ++k)
+          if (mask[k])
+            {
+              unsigned int i = 1;
+              while (i < dim && std::abs(std::abs(R(k, i)) - 1.) > 1e-14)
+                ++i;
+              orthogonal = (i < dim);
+              if (orthogonal)
+                {
+                  fixed[i]                                 = true;
+                  data.fixed_values.local_element(dofs[i]) = R(k, i) * values[k];
+                }
+            }
+        if (!orthogonal)
           {
             std::ostringstream where;
             where << p;
             unsupported = where.str();
             continue;
           }
-        // (mask[j] is false: else u.n would be prescribed)
-        if (j != 0)
-          {
-            data.role[dofs[j]] = mask[0] ? DoFRole::fixed : DoFRole::free;
-            data.fixed_values.local_element(dofs[j]) = mask[0] ? s * values[0] : 0.;
-          }
+        for (unsigned int i = 1; i < dim; ++i)
+          data.role[dofs[i]] = fixed[i] ? DoFRole::fixed : DoFRole::free;
         data.role[dofs[0]]                       = DoFRole::bounded;
-        data.fixed_values.local_element(dofs[0]) = 0.;
         data.upper_bounds.local_element(dofs[0]) = gap;
       }
-    AssertThrow(Utilities::MPI::max(static_cast<int>(!unsupported.empty()),
-                                    data.partitioner->get_mpi_communicator()) == 0,
-                ExcMessage("a vertex" + (unsupported.empty() ? "" : " at (" + unsupported + ")") +
+    // (the first such vertex of any process: the message is printed by
+    // process 0)
+    for (const auto &where :
+         Utilities::MPI::all_gather(data.partitioner->get_mpi_communicator(), unsupported))
+      if (unsupported.empty())
+        unsupported = where;
+    AssertThrow(unsupported.empty(),
+                ExcMessage("a vertex at (" + unsupported + ")" +
                            " of both a roller ('Boundary conditions/Dirichlet components') "
-                           "and the contact boundary has an obstacle normal that is not a "
-                           "free coordinate axis ('Data/Obstacle normal'): u.n <= g and the "
+                           "and the contact boundary has an obstacle normal with a part along "
+                           "a prescribed component ('Data/Obstacle normal'): u.n <= g and the "
                            "prescribed components cannot be held together there"));
     penetration = Utilities::MPI::max(penetration, data.partitioner->get_mpi_communicator());
     if (penetration > 0)
@@ -434,8 +483,8 @@ namespace FoslsContact
         const Tensor<1, dim> n = scene.obstacle_normal(p);
         RotationBlock<dim>   block;
         block.dofs    = vertex;
-        block.matrix  = householder(n);
-        block.inverse = block.matrix;
+        block.matrix = vertex_rotation(n);
+        block.inverse.copy_transposed(block.matrix);
         const unsigned int b = data.rotations.size();
         data.rotations.push_back(block);
         for (unsigned int k = 0; k < dim; ++k)

@@ -229,6 +229,16 @@ namespace FoslsContact
     /** The Householder reflection H with H e_1 = n (paper section 4.3). */
     static FullMatrix<double> householder(const Tensor<1, dim> &n);
 
+    /**
+     * The rotation R (x_cart = R x_rot) of a contact vertex with obstacle
+     * normal @p n: R e_1 = n, and e_k (up to sign) is a column for every k
+     * with n_k = 0, so a roller's prescribed components stay single
+     * rotated coordinates. H(n) when n_1 != 0; when n_1 = 0 an orthogonal
+     * matrix that equals H(n) for n = +-e_j. A function of n alone: every
+     * process that holds the vertex builds the same.
+     */
+    static FullMatrix<double> vertex_rotation(const Tensor<1, dim> &n);
+
   private:
     /**
      * The owned DoFs of level @p l sorted by their keys: the position of

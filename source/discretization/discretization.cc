@@ -482,7 +482,7 @@ namespace FoslsContact
         const Point<dim>     p = triangulation.get_vertices()[vi];
         const Tensor<1, dim> n = scene.obstacle_normal(p);
         RotationBlock<dim>   block;
-        block.dofs    = vertex;
+        block.dofs   = vertex;
         block.matrix = vertex_rotation(n);
         block.inverse.copy_transposed(block.matrix);
         const unsigned int b = data.rotations.size();

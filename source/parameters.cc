@@ -403,7 +403,7 @@ namespace FoslsContact
                         "0: the plain monotone multigrid cycle. k > 0: truncated "
                         "nonsmooth Newton multigrid: projected pre-smoothing on "
                         "the finest level, then conjugate gradient steps (at most k; "
-                        "they stop at a residual reduction of 1e-3) "
+                        "they stop at 1e-3 times the first residual of the Newton step) "
                         "preconditioned by the linear truncated cycle on the "
                         "current inactive set, a projected line search that "
                         "never increases J, and projected post-smoothing.");

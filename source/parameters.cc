@@ -349,9 +349,11 @@ namespace FoslsContact
       prm.declare_entry("Tolerance",
                         "1e-8",
                         Patterns::Double(0),
-                        "Stop when the energy norm of the last correction is "
-                        "below Tolerance times that of the first correction "
-                        "(an error reduction factor).");
+                        "Stop when the energy norm of the last correction, "
+                        "times rho/(1-rho) where the rate rho of the last two "
+                        "iterations is above 1/2 (the error of a slowly "
+                        "converging run), is below Tolerance times that of the "
+                        "first correction (an error reduction factor).");
       prm.declare_entry("Max iterations",
                         "200",
                         Patterns::Integer(1),

@@ -94,9 +94,8 @@ namespace FoslsContact
     // force 3.4e-5 off the active set solver's) and, with that fixed,
     // after 1473 by the stagnation check below (1.6e-5 off); now after
     // 2010 iterations, 2.8e-7 off (session 17, found by a probe).
-    const double rho = history.size() > 3 ?
-                         std::max(r.rate, history[history.size() - 2].rate) :
-                         r.rate;
+    // (history[0] is the start, whose rate is 0)
+    const double rho    = std::max(r.rate, history[history.size() - 2].rate);
     const double factor = rho < 1. ? std::max(1., rho / (1. - rho)) :
                                      std::numeric_limits<double>::infinity();
     const double floor = qp.round_off_correction(x);

@@ -383,8 +383,9 @@ namespace FoslsContact
                         "Backward patch sweeps after the coarse correction.");
       prm.declare_entry("Cycle",
                         "W",
-                        Patterns::Selection("V|W"),
-                        "Multigrid cycle.");
+                        Patterns::Selection("V|W|F"),
+                        "Multigrid cycle: V, W, or F (an F-cycle on the coarser "
+                        "level, then a V-cycle there).");
       prm.declare_entry("Projection",
                         "b",
                         Patterns::Selection("a|b|c|d"),
@@ -449,7 +450,8 @@ namespace FoslsContact
       discretization_fraction = prm.get_double("Discretization fraction");
       pre_smoothing           = prm.get_integer("Pre smoothing");
       post_smoothing          = prm.get_integer("Post smoothing");
-      cycle_gamma             = prm.get("Cycle") == "V" ? 1 : 2;
+      const std::string c     = prm.get("Cycle");
+      cycle                   = (c == "V" ? Cycle::V : c == "W" ? Cycle::W : Cycle::F);
       const std::string p     = prm.get("Projection");
       projection              = (p == "a" ? Projection::a :
                                  p == "b" ? Projection::b :

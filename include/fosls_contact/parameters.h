@@ -142,6 +142,17 @@ namespace FoslsContact
         tolerance,
         discretization_accuracy,
       };
+      /**
+       * V: one visit of the coarser level per visit; W: two; F: an F-cycle
+       * on the coarser level, then a V-cycle there (level l - k is visited
+       * k + 1 times instead of 2^k).
+       */
+      enum class Cycle
+      {
+        V,
+        W,
+        F,
+      };
 
       Type         type                = Type::monotone_multigrid;
       double       tolerance           = 1e-8;
@@ -150,7 +161,7 @@ namespace FoslsContact
       double       discretization_fraction = 0.1;
       unsigned int pre_smoothing       = 3;
       unsigned int post_smoothing      = 3;
-      unsigned int cycle_gamma         = 2; ///< 1 = V-cycle, 2 = W-cycle
+      Cycle        cycle               = Cycle::W;
       Projection   projection          = Projection::b;
       InitialGuess initial_guess       = InitialGuess::coarse_solution;
       unsigned int definiteness_max_dofs = 20000;

@@ -512,8 +512,12 @@ namespace FoslsContact
                                 const LevelVector &         ub,
                                 const std::vector<DoFRole> &role,
                                 LevelVector &               v,
-                                const bool                  linear)
+                                const bool                  linear,
+                                std::optional<Parameters::Solver::Cycle> type)
   {
+    using Cycle = Parameters::Solver::Cycle;
+    if (!type)
+      type = parameters.cycle;
     const TimedScope level_timing(level_time[l]);
     if (solved_exactly(l, linear))
       {
@@ -536,7 +540,7 @@ namespace FoslsContact
     const auto &       fine        = hierarchy.level(l);
     const auto &       coarse      = hierarchy.level(l - 1);
     // (an exact coarse solve needs one visit)
-    const unsigned int visits = solved_exactly(l - 1, linear) ? 1 : parameters.cycle_gamma;
+    const unsigned int visits = solved_exactly(l - 1, linear) || *type == Cycle::V ? 1 : 2;
     const unsigned int n_local     = fine.n_local();
     const unsigned int n_owned     = fine.n_owned();
     // the work vectors of this level (a level is never visited twice at
@@ -616,7 +620,16 @@ namespace FoslsContact
         CoarseObstacles::project(
           parameters.projection, hierarchy.face_relations(l), face_scale[l], defect, ub_coarse);
         c = 0;
-        cycle(l - 1, galerkin[l - 1], r_coarse, ub_coarse, coarse.role, c, linear);
+        // (an F-cycle: an F-cycle on the first visit, a V-cycle on the
+        // second)
+        cycle(l - 1,
+              galerkin[l - 1],
+              r_coarse,
+              ub_coarse,
+              coarse.role,
+              c,
+              linear,
+              *type == Cycle::F && visit == 1 ? Cycle::V : *type);
 
         // (c's ghost values are valid after the coarse cycle)
         vmult(P, w, c, false);

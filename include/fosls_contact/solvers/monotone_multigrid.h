@@ -14,6 +14,7 @@
 #include <fosls_contact/solvers/qp_solver.h>
 
 #include <chrono>
+#include <optional>
 
 namespace FoslsContact
 {
@@ -184,7 +185,9 @@ namespace FoslsContact
      * With @p linear (the Newton step's preconditioner), the finest
      * level is relaxed with the roles of the truncated linear problem
      * (PatchSmoother::set_linear_roles), and coarse faces with a truncated son are removed
-     * instead of rerouted.
+     * instead of rerouted. @p type is the cycle on this level (the
+     * parameter file's by default; an F-cycle visits its coarser level
+     * with an F-cycle and then a V-cycle).
      */
     void cycle(const unsigned int          l,
                const SparseMatrix<double> &A,
@@ -192,7 +195,8 @@ namespace FoslsContact
                const LevelVector &         ub,
                const std::vector<DoFRole> &role,
                LevelVector &               v,
-               const bool                  linear = false);
+               const bool                  linear = false,
+               std::optional<Parameters::Solver::Cycle> type = {});
 
     /**
      * One step of truncated nonsmooth Newton multigrid with conjugate

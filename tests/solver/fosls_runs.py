@@ -212,6 +212,25 @@ def check_monotone_feasible(run, label, scale=0.01,
           % (VIOLATION_TOLERANCE * scale / 0.01))
 
 
+def level_visits_follow(run, visits_at_depth, coarsest_exact=True):
+    """summary.json's level_visits are those of a cycle that visits level
+    J - k visits_at_depth(k) times per visit of the finest level J, down to
+    the coarsest level it visits, C, which is visited as often as level
+    C + 1 (once per visit: it is solved exactly), and the levels below C
+    not at all. C: with @p coarsest_exact (the linear cycle of the default
+    solver) the finest level below J with at most 200 DoFs (level 0 if
+    there is none), otherwise level 0 (the plain cycle)."""
+    visits, dofs = run["level_visits"], run["level_dofs"]
+    J = len(visits) - 1
+    C = 0
+    if coarsest_exact:
+        C = max([l for l in range(1, J) if dofs[l] <= 200] or [0])
+    return (visits[C] == visits[C + 1] and
+            all(visits[l] == 0 for l in range(C)) and
+            all(visits[l] == visits[J] * visits_at_depth(J - l)
+                for l in range(C + 1, J + 1)))
+
+
 def describe(run, label, keys=("iterations", "cycles", "converged",
                                "active", "feasibility_dampings")):
     """One deterministic line: the integer/boolean fields @p keys."""

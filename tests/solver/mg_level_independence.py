@@ -23,7 +23,7 @@ import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fosls_runs import Runner, check, check_monotone_feasible, finish, \
-    rounded
+    level_visits_follow, rounded
 
 R = Runner(sys.argv)
 for lam in ["1", "inf"]:
@@ -52,12 +52,9 @@ for lam in ["1", "inf"]:
         # level 3, from J = 3 on; level 1 of 42 DoFs for J = 2), and does
         # not visit the levels below it. The times are those of the levels
         # without the coarser ones, so they add up to at most the solve time.
-        visits, seconds, dofs = run["level_visits"], run["level_time_s"], run["level_dofs"]
-        J = len(visits) - 1
-        C = max([l for l in range(1, J) if dofs[l] <= 200] or [0])
-        check(dofs[J] == run["dofs"] and visits[C] == visits[C + 1] and
-              all(visits[l] == 0 for l in range(C)) and
-              all(visits[l] == visits[J] * 2 ** (J - l) for l in range(C + 1, J + 1)) and
+        seconds = run["level_time_s"]
+        check(run["level_dofs"][-1] == run["dofs"] and
+              level_visits_follow(run, lambda k: 2 ** k) and
               min(seconds) >= 0 and sum(seconds) <= run["time_solve_s"],
               label + ": W-cycle visits level l 2^(J-l) times per cycle down to "
               "the exactly solved level (the finest below J with <= 200 DoFs), "

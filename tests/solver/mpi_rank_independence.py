@@ -13,6 +13,9 @@
 #    levels, and the paper's plain cycle with 2 levels, whose flux
 #    rerouting reads operator entries of other processes, 1/2/3 processes;
 #  - the 3D cube, default solver, 3 levels, 1/2/4 processes;
+#  - the square with the F-cycle (Solver/Cycle = F), 6 levels, 1/2/3
+#    processes: its visits per level (k + 1 for level J - k) on every
+#    process count;
 #  - the reference solvers on the square: active set + KLU (a distributed
 #    Trilinos matrix), and 100 sweeps of projected Gauss-Seidel (gathered on
 #    the first process and swept in the order of the support points,
@@ -34,7 +37,7 @@ import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fosls_runs import Runner, check, check_monotone_feasible, describe, \
-    finish, relative_difference
+    finish, level_visits_follow, relative_difference
 
 R = Runner(sys.argv)
 cases = [
@@ -43,6 +46,8 @@ cases = [
     ("half disc, 2 levels, plain cycle", "prm/hertz.prm",
      ["Geometry/Levels=2", "Solver/Krylov steps=0"], [2, 3], True),
     ("cube, 3 levels", "prm/cube3d.prm", ["Geometry/Levels=3"], [2, 4], True),
+    ("square, 6 levels, F-cycle", "prm/square.prm",
+     ["Geometry/Levels=6", "Solver/Cycle=F"], [2, 3], True),
     ("square, 4 levels, active set", "prm/square.prm",
      ["Geometry/Levels=4", "Solver/Type=active set"], [2], False),
     ("square, 4 levels, 100 sweeps of projected Gauss-Seidel",
@@ -75,4 +80,7 @@ for label, prm, settings, processes, multigrid in cases:
               name + ": iterations within 1 of those on 1 process")
         check(run["active"] == one["active"],
               name + ": active constraints as on 1 process")
+        if "Solver/Cycle=F" in settings:
+            check(level_visits_follow(run, lambda k: k + 1),
+                  name + ": level J - k visited k + 1 times per cycle")
 finish()

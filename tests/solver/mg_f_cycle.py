@@ -19,8 +19,9 @@
 # W-cycle's iterations and cycles (default solver: 3 iterations, 12 cycles; plain cycle on 6 levels: 11 iterations, levels
 # 1..5 visited 55, 44, 33, 22, 11 times instead of 176, 88, 44, 22, 11).
 # On the half disc with 4 levels F took 40 cycles against W's 35 (rate
-# 0.30 against 0.15), with 5 levels 74 against 68 (by hand; solve 8.6 s
-# against 10.9 s, single runs).
+# 0.30 against 0.15), with 5 levels 74 against 68-69 (bench/cycle_type.py,
+# doc/cycle_type_results.md, which also times them: within the machine's
+# scatter of each other).
 # The previous binary refuses `Cycle = F` (Patterns::Selection("V|W")).
 import sys
 import os

@@ -12,8 +12,8 @@ cycles are those of the Newton steps' CG (the finest level's visits); the
 Newton steps' projected smoothing, the CG vector operations and the monitor
 are outside them.
 
-This is the measurement behind the flatness analysis of doc/method.md
-(section 8): a W-cycle visits level l 2^(J-l) times, so in 2D every level
+This is the measurement behind the flatness analysis of doc/performance.md:
+a W-cycle visits level l 2^(J-l) times, so in 2D every level
 costs about half of the level above it, and the levels too small for two
 threads (a few dozen patches per color) stay serial.
 

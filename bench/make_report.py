@@ -596,7 +596,7 @@ md.append("Where the time per cycle goes (λ = 1; µs per cycle per DoF, from th
           "line search and the monitor's per-iteration evaluations; the same level "
           "by level, with 1 and 2 threads, in [level_costs.md](level_costs.md), "
           "`bench/level_costs.py`, and why the ratio is what it is in "
-          "[method.md](method.md), section 8):\n")
+          "[performance.md](performance.md)):\n")
 body = []
 for L in range(5, 10):
     r = one(group="square", config="default", level=L, **{"lambda": "1"})

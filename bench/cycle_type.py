@@ -11,9 +11,13 @@ doc/cycle_type_results.md.
 Second, the time per cycle per DoF of W and F on the square's levels 5 to 9
 with 1 and 2 threads (the flatness of issue 3's item 9, doc/results.md f):
 the fastest of FLAT_RUNS runs per case, W and F alternated, so that both
-see the same spells of the machine.
+see the same spells of the machine, and each first in half of the runs: with
+W always first, F's level 5 with 2 threads was 3-17% slower in all 3 runs
+(0.545 against 0.500 us at best) although it visits the same levels as W;
+with the order alternated, 8 runs each, F and W took 10.1 and 10.6 ms at
+best (by hand).
 
-    bench/cycle_type.py          # about 12 minutes on 2 cores
+    bench/cycle_type.py          # about 20 minutes on 2 cores
     bench/cycle_type.py --quick  # without the flatness part, about 5
 """
 import os
@@ -29,7 +33,7 @@ CASES = [("square, 9 levels", "square.prm", {"Geometry/Levels": "9"}),
          ("half disc, 5 levels", "hertz.prm", {"Geometry/Levels": "5"})]
 CYCLES = ("W", "V", "F")
 FLAT_LEVELS = (5, 6, 7, 8, 9)
-FLAT_RUNS = 3
+FLAT_RUNS = 4
 
 
 def flatness():
@@ -40,7 +44,7 @@ def flatness():
     for run_index in range(FLAT_RUNS):
         for level in FLAT_LEVELS:
             for threads in (1, 2):
-                for cycle in ("W", "F"):
+                for cycle in ("W", "F") if (run_index + level) % 2 == 0 else ("F", "W"):
                     out = os.path.join(RES, f"flat_L{level}_t{threads}_{cycle}")
                     s = run("square.prm", {"Geometry/Levels": str(level), "Solver/Cycle": cycle,
                                            "Solver/Tolerance": "1e-8"}, 1, threads, out)
@@ -53,7 +57,8 @@ def flatness():
                           flush=True)
     lines = ["## Time per cycle per DoF, W against F", "",
              f"The square (`square.prm`, lambda = 1, tolerance 1e-8), one process, the "
-             f"fastest of {FLAT_RUNS} runs per case, W and F alternated; µs per cycle per "
+             f"fastest of {FLAT_RUNS} runs per case, W and F alternated (each first in half "
+             "of the runs); µs per cycle per "
              "DoF (solve time / cycles / DoFs), cycles in parentheses. max/min over "
              f"levels {FLAT_LEVELS[0]}-{FLAT_LEVELS[-1]} is the flatness of issue 3's item "
              "9 (target at most 1.25).", "",

@@ -148,7 +148,7 @@ namespace FoslsContact
 
 
   template <int dim>
-  void
+  bool
   MonotoneMultigrid<dim>::update_coarse_operator(const unsigned int          l,
                                                  const SparseMatrix<double> &A,
                                                  const std::vector<DoFRole> &role,
@@ -161,7 +161,7 @@ namespace FoslsContact
                            reroute == reroute_used[l];
     const MPI_Comm comm = hierarchy.level(l).partitioner->get_mpi_communicator();
     if (Utilities::MPI::min(unchanged ? 1u : 0u, comm) == 1)
-      return;
+      return false;
     const TimedScope timing(galerkin_time);
 
     // P~: the rows of P at truncated DoFs are zero (its pattern holds P's
@@ -256,6 +256,7 @@ namespace FoslsContact
                                 hierarchy.n_colors(l - 1),
                                 coarse.role,
                                 coarse.partitioner);
+    return true;
   }
 
 
@@ -595,6 +596,7 @@ namespace FoslsContact
     auto &Ac        = work.Ac;
     const MPI_Comm comm = fine.partitioner->get_mpi_communicator();
 
+    double alpha = 1.; // the damping of the last visit's correction
     for (unsigned int visit = 0; visit < visits; ++visit)
       {
         // Truncation (eq. 34): fixed, active and switched-off DoFs do not
@@ -611,12 +613,26 @@ namespace FoslsContact
             truncated[i]            = vi >= ubi; // active
             defect.local_element(i) = truncated[i] ? inf : ubi - vi;
           }
-        update_coarse_operator(l, A, role, truncated, !linear);
-        const auto &P = truncated_prolongation[l];
+        const bool rebuilt = update_coarse_operator(l, A, role, truncated, !linear);
+        const auto &P       = truncated_prolongation[l];
 
-        vmult(A, residual, v, false);
-        residual.sadd(-1., 1., r);
-        galerkin_product[l].Tvmult(r_coarse, residual);
+        if (visit == 0 || rebuilt)
+          {
+            vmult(A, residual, v, false);
+            residual.sadd(-1., 1., r);
+            galerkin_product[l].Tvmult(r_coarse, residual);
+          }
+        else
+          // The truncation is the one of the last visit (always so in the
+          // Newton step's linear cycle), so the coarse operator is
+          // P~^T A P~ with the same P~, and the coarse defect of
+          // v + alpha P~ c is P~^T (r - A v) - alpha P~^T A P~ c =
+          // r_coarse - alpha A_{l-1} c, with A_{l-1} c from the last visit:
+          // no product with the fine matrix and P~. (The same up to
+          // round-off: the square's cycles and J unchanged on levels 5-9,
+          // solves 2% (level 5) to 7% (level 7) faster on one thread, by
+          // hand.)
+          r_coarse.add(-alpha, Ac);
         CoarseObstacles::project(
           parameters.projection, hierarchy.face_relations(l), face_scale[l], defect, ub_coarse);
         c = 0;
@@ -634,7 +650,7 @@ namespace FoslsContact
         // (c's ghost values are valid after the coarse cycle)
         vmult(P, w, c, false);
         // keep the iterate feasible (a no-op when K_H is inside K_h)
-        double alpha = 1.;
+        alpha = 1.;
         for (const auto i : work.bounded)
           if (i < n_owned && !truncated[i])
             {

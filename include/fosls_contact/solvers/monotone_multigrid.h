@@ -218,8 +218,12 @@ namespace FoslsContact
                       const std::vector<DoFRole> &role,
                       LevelVector &               v);
 
-    /** Truncated prolongation and Galerkin operator of level l - 1. */
-    void update_coarse_operator(const unsigned int          l,
+    /**
+     * Truncated prolongation and Galerkin operator of level l - 1, rebuilt
+     * only when the truncation (or the operator of level l) changed.
+     * Returns whether they were rebuilt (the same on every process).
+     */
+    bool update_coarse_operator(const unsigned int          l,
                                 const SparseMatrix<double> &A,
                                 const std::vector<DoFRole> &role,
                                 const std::vector<bool> &   truncated,

@@ -46,8 +46,11 @@ PHASES = [("Assembly", "assembly"), ("Setup: solver", "solver set-up"),
           ("Solve", "solve")]
 
 
-def run(scene, settings, processes, threads, out):
-    cmd = [BIN, os.path.join(ROOT, "prm", scene), "--set", f"Output/Directory={out}",
+def run(scene, settings, processes, threads, out, binary=None):
+    """One run of `binary` (default: build/fosls-contact) on prm/`scene` with
+    the `settings` ("Subsection/Name": value); its summary.json, with the
+    wall time of the whole run as "wall_s"."""
+    cmd = [binary or BIN, os.path.join(ROOT, "prm", scene), "--set", f"Output/Directory={out}",
            "--set", "Output/Write vtu=false", "--set", "Output/Verbose=false",
            "--set", f"Solver/Threads={threads}"]
     if processes > 1:

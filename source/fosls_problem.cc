@@ -534,6 +534,12 @@ namespace FoslsContact
         summary["level_dofs"]   = dofs + "]";
         summary["level_visits"] = visits + "]";
         summary["level_time_s"] = seconds + "]";
+        if (parameters.solver.check_coarse_defects)
+          {
+            const auto [checks, difference]      = mg->coarse_defect_check();
+            summary["coarse_defect_checks"]     = std::to_string(checks);
+            summary["coarse_defect_difference"] = number(difference);
+          }
       }
     summary["time_setup_s"]          = number(time_setup);
     summary["time_solve_s"]          = number(time_solve);

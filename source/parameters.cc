@@ -423,6 +423,19 @@ namespace FoslsContact
                         "thread count, so other results can differ in the last "
                         "digits (measured: the contact force to 2e-10 relative or "
                         "better, doc/parallel_results.md).");
+      prm.declare_entry("Check coarse defects",
+                        "false",
+                        Patterns::Bool(),
+                        "A diagnostic of the monotone multigrid for tests: the "
+                        "second visit of a level in a W- or F-cycle takes its coarse "
+                        "defect as r_H - alpha A_H c when the truncation is the first "
+                        "visit's; with true, it is also recomputed as P~^T (r - A v) "
+                        "and the largest difference, relative to |P~^T| (|A| |v| + "
+                        "|r|) (max norms), is written to summary.json as "
+                        "coarse_defect_difference (round-off: below 1e-15), with the "
+                        "number of such visits as coarse_defect_checks. Costs a "
+                        "product with the level's matrix and with P~^T per visit; "
+                        "the iterates are the same.");
       prm.declare_entry("Definiteness check max dofs",
                         "20000",
                         Patterns::Integer(0),
@@ -465,6 +478,7 @@ namespace FoslsContact
       definiteness_max_dofs = prm.get_integer("Definiteness check max dofs");
       krylov_steps          = prm.get_integer("Krylov steps");
       threads               = prm.get_integer("Threads");
+      check_coarse_defects  = prm.get_bool("Check coarse defects");
       prm.leave_subsection();
       // without smoothing the cycle never changes the finest level's
       // oscillating part: the first correction is the coarse one, and the

@@ -168,6 +168,12 @@ namespace FoslsContact
       unsigned int krylov_steps          = 10;
       /** 0: as many threads as cores (or DEAL_II_NUM_THREADS). */
       unsigned int threads               = 0;
+      /**
+       * A diagnostic: recompute the coarse defects a W- or F-cycle's
+       * second visit takes from the first (MonotoneMultigrid::cycle()) and
+       * report the largest difference.
+       */
+      bool         check_coarse_defects  = false;
 
       static void declare_parameters(ParameterHandler &prm);
       void        parse_parameters(ParameterHandler &prm);

@@ -632,7 +632,11 @@ namespace FoslsContact
           // round-off: the square's cycles and J unchanged on levels 5-9,
           // solves 2% (level 5) to 7% (level 7) faster on one thread, by
           // hand.)
-          r_coarse.add(-alpha, Ac);
+          {
+            r_coarse.add(-alpha, Ac);
+            if (parameters.check_coarse_defects)
+              check_coarse_defect(l, A, r, v, r_coarse);
+          }
         CoarseObstacles::project(
           parameters.projection, hierarchy.face_relations(l), face_scale[l], defect, ub_coarse);
         c = 0;
@@ -687,6 +691,31 @@ namespace FoslsContact
       smoother.smooth(l, v, r);
     }
     smoother.use_linear_roles(l, false);
+  }
+
+
+  template <int dim>
+  void
+  MonotoneMultigrid<dim>::check_coarse_defect(const unsigned int          l,
+                                              const SparseMatrix<double> &A,
+                                              const LevelVector &         r,
+                                              const LevelVector &         v,
+                                              const LevelVector &         r_coarse)
+  {
+    LevelVector residual(r), difference(r_coarse);
+    vmult(A, residual, v, false); // (v's ghosts: valid in the visit)
+    residual.sadd(-1., 1., r);
+    galerkin_product[l].Tvmult(difference, residual);
+    difference -= r_coarse;
+    const MPI_Comm comm = r.get_partitioner()->get_mpi_communicator();
+    const double   bound =
+      Utilities::MPI::max(truncated_prolongation[l].l1_norm(), comm) *
+      (Utilities::MPI::max(A.linfty_norm(), comm) * v.linfty_norm() + r.linfty_norm());
+    const double d = bound > 0 ? difference.linfty_norm() / bound : 0.;
+    ++n_coarse_defect_checks;
+    // (a NaN is kept: std::max would drop it)
+    if (!std::isnan(coarse_defect_difference) && (std::isnan(d) || d > coarse_defect_difference))
+      coarse_defect_difference = d;
   }
 
 

@@ -122,6 +122,17 @@ namespace FoslsContact
      */
     std::vector<SectionTime> level_times() const;
 
+    /**
+     * With Solver/Check coarse defects: the number of second visits that
+     * took their coarse defect from the first visit's, and the largest
+     * difference to the recomputed one (check_coarse_defect()). Both 0
+     * without the check.
+     */
+    std::pair<unsigned int, double> coarse_defect_check() const
+    {
+      return {n_coarse_defect_checks, coarse_defect_difference};
+    }
+
   private:
     /** Adds the wall time of its lifetime to a SectionTime. */
     class TimedScope
@@ -197,6 +208,20 @@ namespace FoslsContact
                LevelVector &               v,
                const bool                  linear = false,
                std::optional<Parameters::Solver::Cycle> type = {});
+
+    /**
+     * The check of Solver/Check coarse defects: @p r_coarse, the coarse
+     * defect of @p v on level @p l that the second visit took from the
+     * first, against P~^T (r - A v) recomputed. The difference is taken
+     * relative to a bound of the terms' size, |P~^T| (|A| |v| + |r|)
+     * (max norms), since near the solution r - A v is the small
+     * difference of large terms and carries their round-off. Collective.
+     */
+    void check_coarse_defect(const unsigned int          l,
+                             const SparseMatrix<double> &A,
+                             const LevelVector &         r,
+                             const LevelVector &         v,
+                             const LevelVector &         r_coarse);
 
     /**
      * One step of truncated nonsmooth Newton multigrid with conjugate
@@ -356,6 +381,8 @@ namespace FoslsContact
     unsigned int                                       coarse_version = numbers::invalid_unsigned_int;
     unsigned int                                       n_increases = 0;
     unsigned int                                       n_dampings  = 0;
+    unsigned int                                       n_coarse_defect_checks   = 0;
+    double                                             coarse_defect_difference = 0;
   };
 } // namespace FoslsContact
 

@@ -34,7 +34,9 @@ def arguments():
     p.add_argument("--levels", default="5,6,7,8,9", help="Geometry/Levels values (default 5-9)")
     p.add_argument("--threads", type=int, default=1, help="threads per process (default 1)")
     p.add_argument("--processes", type=int, default=1, help="MPI processes (default 1)")
-    p.add_argument("--runs", type=int, default=4, help="runs per build and level (default 4)")
+    p.add_argument("--runs", type=int, default=4,
+                   help="runs per build and level (default 4; at least the number of builds "
+                   "for each to go first in turn)")
     p.add_argument("--scene", default="square.prm", help="a file of prm/ (default square.prm)")
     p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                    help="a further parameter, e.g. Material/lambda=inf")
@@ -49,15 +51,17 @@ def arguments():
     for text in a.bin:
         name, path = pair(text, "--bin")
         path = os.path.abspath(path)
+        if not all(c.isalnum() or c in "-_." for c in name):
+            p.error(f"--bin '{text}': a name of letters, digits, '-', '_' and '.' only")
         if name in a.bins:
             p.error(f"--bin '{text}': the name '{name}' is given twice")
-        if not os.access(path, os.X_OK):
+        if not (os.path.isfile(path) and os.access(path, os.X_OK)):
             p.error(f"--bin '{text}': {path} is not an executable file")
         a.bins[name] = path
     if len(a.bins) < 2:
         p.error("--bin: give at least two builds")
     try:
-        a.levels = [int(x) for x in a.levels.split(",")]
+        a.levels = sorted(set(int(x) for x in a.levels.split(",")))
     except ValueError:
         p.error(f"--levels '{a.levels}': expected integers separated by commas")
     if min(a.levels) < 1 or a.threads < 1 or a.processes < 1 or a.runs < 1:
@@ -65,6 +69,11 @@ def arguments():
     if not os.path.isfile(os.path.join(ROOT, "prm", a.scene)):
         p.error(f"--scene '{a.scene}': no such file in {os.path.join(ROOT, 'prm')}")
     a.settings = dict(pair(s, "--set") for s in a.set)
+    for key in a.settings:
+        # (these the script sets itself: the levels per run, the output it
+        # reads back, the threads of --threads)
+        if key == "Geometry/Levels" or key == "Solver/Threads" or key.startswith("Output/"):
+            p.error(f"--set '{key}': set by the script (use --levels or --threads)")
     return a
 
 
@@ -100,14 +109,16 @@ def main():
     print("|" + "---|" * (2 + 2 * len(names)))
     for level in a.levels:
         ref = best[(names[0], level)]
-        same = all(best[(n, level)][1]["cycles"] == ref[1]["cycles"] and
-                   abs(best[(n, level)][1]["functional"] - ref[1]["functional"]) <=
-                   1e-10 * abs(ref[1]["functional"]) for n in names[1:])
+        def same_as_reference(n):
+            s, r = best[(n, level)][1], ref[1]
+            return (s["cycles"] == r["cycles"] and None not in (s["functional"], r["functional"])
+                    and abs(s["functional"] - r["functional"]) <= 1e-10 * abs(r["functional"]))
+        differ = [n for n in names[1:] if not same_as_reference(n)]
         print(f"| {level} | {ref[1]['dofs']} | " +
               " | ".join(f"{best[(n, level)][0]:.3f} ({best[(n, level)][1]['cycles']})"
                          for n in names) + " | " +
               " | ".join(f"{best[(n, level)][0] / ref[0]:.3f}" for n in names[1:]) +
-              f" | {'yes' if same else 'NO'} |")
+              f" | {'NO: ' + ', '.join(differ) if differ else 'yes'} |")
     if len(a.levels) > 1:
         print("| max/min | | " + " | ".join(
             f"{max(best[(n, l)][0] for l in a.levels) / min(best[(n, l)][0] for l in a.levels):.2f}"

@@ -711,9 +711,15 @@ namespace FoslsContact
     const double   bound =
       Utilities::MPI::max(truncated_prolongation[l].l1_norm(), comm) *
       (Utilities::MPI::max(A.linfty_norm(), comm) * v.linfty_norm() + r.linfty_norm());
-    const double d = bound > 0 ? difference.linfty_norm() / bound : 0.;
+    // (linfty_norm() may drop a NaN, the l2 norm keeps it; once NaN, the
+    // result stays NaN, which std::max would drop)
+    const double size = difference.l2_norm();
+    const double d    = !std::isfinite(size) || !std::isfinite(bound) ?
+                          std::numeric_limits<double>::quiet_NaN() :
+                        bound > 0 ? difference.linfty_norm() / bound :
+                        size > 0  ? std::numeric_limits<double>::infinity() :
+                                    0.;
     ++n_coarse_defect_checks;
-    // (a NaN is kept: std::max would drop it)
     if (!std::isnan(coarse_defect_difference) && (std::isnan(d) || d > coarse_defect_difference))
       coarse_defect_difference = d;
   }

@@ -617,22 +617,18 @@ namespace FoslsContact
         const auto &P       = truncated_prolongation[l];
 
         if (visit == 0 || rebuilt)
-          {
-            vmult(A, residual, v, false);
-            residual.sadd(-1., 1., r);
-            galerkin_product[l].Tvmult(r_coarse, residual);
-          }
+          restrict_defect(l, A, r, v, residual, r_coarse);
         else
-          // The truncation is the one of the last visit (always so in the
-          // Newton step's linear cycle), so the coarse operator is
-          // P~^T A P~ with the same P~, and the coarse defect of
-          // v + alpha P~ c is P~^T (r - A v) - alpha P~^T A P~ c =
-          // r_coarse - alpha A_{l-1} c, with A_{l-1} c from the last visit:
-          // no product with the fine matrix and P~. (The same up to
-          // round-off: the square's cycles and J unchanged on levels 5-9,
-          // solves 2% (level 5) to 7% (level 7) faster on one thread, by
-          // hand.)
           {
+            // The truncation is the one of the last visit (always so in the
+            // Newton step's linear cycle), so the coarse operator is
+            // P~^T A P~ with the same P~, and the coarse defect of
+            // v + alpha P~ c is P~^T (r - A v) - alpha P~^T A P~ c =
+            // r_coarse - alpha A_{l-1} c, with A_{l-1} c from the last visit:
+            // no product with the fine matrix and P~. (The same up to
+            // round-off: the square's cycles and J unchanged on levels 5-9,
+            // solves 2% (level 5) to 7% (level 7) faster on one thread, by
+            // hand.)
             r_coarse.add(-alpha, Ac);
             if (parameters.check_coarse_defects)
               check_coarse_defect(l, A, r, v, r_coarse);
@@ -696,6 +692,21 @@ namespace FoslsContact
 
   template <int dim>
   void
+  MonotoneMultigrid<dim>::restrict_defect(const unsigned int          l,
+                                          const SparseMatrix<double> &A,
+                                          const LevelVector &         r,
+                                          const LevelVector &         v,
+                                          LevelVector &               residual,
+                                          LevelVector &               r_coarse) const
+  {
+    vmult(A, residual, v, false); // (v's ghosts: valid in a visit)
+    residual.sadd(-1., 1., r);
+    galerkin_product[l].Tvmult(r_coarse, residual);
+  }
+
+
+  template <int dim>
+  void
   MonotoneMultigrid<dim>::check_coarse_defect(const unsigned int          l,
                                               const SparseMatrix<double> &A,
                                               const LevelVector &         r,
@@ -703,9 +714,7 @@ namespace FoslsContact
                                               const LevelVector &         r_coarse)
   {
     LevelVector residual(r), difference(r_coarse);
-    vmult(A, residual, v, false); // (v's ghosts: valid in the visit)
-    residual.sadd(-1., 1., r);
-    galerkin_product[l].Tvmult(difference, residual);
+    restrict_defect(l, A, r, v, residual, difference);
     difference -= r_coarse;
     const MPI_Comm comm = r.get_partitioner()->get_mpi_communicator();
     const double   bound =

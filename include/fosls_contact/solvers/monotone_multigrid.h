@@ -210,6 +210,18 @@ namespace FoslsContact
                std::optional<Parameters::Solver::Cycle> type = {});
 
     /**
+     * The coarse defect of @p v on level @p l, @p r_coarse = P~^T (r - A v),
+     * with the fine residual left in @p residual. The ghost values of @p v
+     * must be valid. Collective.
+     */
+    void restrict_defect(const unsigned int          l,
+                         const SparseMatrix<double> &A,
+                         const LevelVector &         r,
+                         const LevelVector &         v,
+                         LevelVector &               residual,
+                         LevelVector &               r_coarse) const;
+
+    /**
      * The check of Solver/Check coarse defects: @p r_coarse, the coarse
      * defect of @p v on level @p l that the second visit took from the
      * first, against P~^T (r - A v) recomputed. The difference is taken

@@ -23,7 +23,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from parallel import ROOT, RES, run  # noqa: E402
+from parallel import ROOT, fastest  # noqa: E402
 
 
 def arguments():
@@ -80,24 +80,12 @@ def arguments():
 def main():
     a = arguments()
     names = list(a.bins)
-    best = {}  # (name, level) -> (us per cycle per DoF, summary)
-    for k in range(a.runs):
-        for level in a.levels:
-            # each build first in turn
-            shift = (k + level) % len(names)
-            for name in names[shift:] + names[:shift]:
-                out = os.path.join(RES, f"compare_{name}_L{level}")
-                try:
-                    s = run(a.scene, dict(a.settings, **{"Geometry/Levels": str(level)}),
-                            a.processes, a.threads, out, binary=a.bins[name])
-                except SystemExit as e:
-                    print(e, file=sys.stderr)
-                    sys.exit(1)
-                per_dof = s["time_solve_s"] / max(s["cycles"], 1) / s["dofs"] * 1e6
-                if (name, level) not in best or per_dof < best[(name, level)][0]:
-                    best[(name, level)] = (per_dof, s)
-                print(f"run {k + 1}/{a.runs} level {level} {name}: {per_dof:.3f} us per "
-                      f"cycle per DoF, {s['cycles']} cycles", flush=True)
+    try:
+        best = fastest({n: (a.bins[n], {}) for n in names}, a.levels, a.runs, a.scene,
+                       a.settings, a.processes, a.threads, "compare")
+    except SystemExit as e:  # a failed run: its command and error
+        print(e, file=sys.stderr)
+        sys.exit(1)
 
     print()
     print(f"{a.scene}, {a.processes} process(es) x {a.threads} thread(s), "

@@ -25,7 +25,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from parallel import ROOT, BIN, RES, run  # noqa: E402
+from parallel import ROOT, BIN, RES, fastest, run  # noqa: E402
 
 OUT = os.path.join(ROOT, "doc", "cycle_type_results.md")
 CASES = [("square, 9 levels", "square.prm", {"Geometry/Levels": "9"}),
@@ -41,20 +41,12 @@ def flatness():
     the square, lambda = 1, tolerance 1e-8 (the settings of doc/results.md f),
     levels FLAT_LEVELS, 1 and 2 threads: the fastest of FLAT_RUNS runs."""
     best = {}
-    for run_index in range(FLAT_RUNS):
-        for level in FLAT_LEVELS:
-            for threads in (1, 2):
-                for cycle in ("W", "F") if (run_index + level) % 2 == 0 else ("F", "W"):
-                    out = os.path.join(RES, f"flat_L{level}_t{threads}_{cycle}")
-                    s = run("square.prm", {"Geometry/Levels": str(level), "Solver/Cycle": cycle,
-                                           "Solver/Tolerance": "1e-8"}, 1, threads, out)
-                    per_dof = s["time_solve_s"] / s["cycles"] / s["dofs"] * 1e6
-                    key = (threads, cycle, level)
-                    if key not in best or per_dof < best[key][0]:
-                        best[key] = (per_dof, s["cycles"])
-                    print(f"run {run_index + 1}/{FLAT_RUNS} level {level} {threads} thread(s) "
-                          f"{cycle}: {per_dof:.3f} us per cycle per DoF, {s['cycles']} cycles",
-                          flush=True)
+    for threads in (1, 2):
+        for (cycle, level), value in fastest({c: (None, {"Solver/Cycle": c}) for c in ("W", "F")},
+                                             FLAT_LEVELS, FLAT_RUNS, "square.prm",
+                                             {"Solver/Tolerance": "1e-8"}, 1, threads,
+                                             "flat").items():
+            best[(threads, cycle, level)] = (value[0], value[1]["cycles"])
     lines = ["## Time per cycle per DoF, W against F", "",
              f"The square (`square.prm`, lambda = 1, tolerance 1e-8), one process, the "
              f"fastest of {FLAT_RUNS} runs per case, W and F alternated (each first in half "

@@ -70,6 +70,34 @@ def run(scene, settings, processes, threads, out, binary=None):
     return s
 
 
+def fastest(variants, levels, runs, scene, settings, processes, threads, tag):
+    """The time per cycle per DoF (solve time / cycles / DoFs of summary.json,
+    the measure of doc/results.md f) of every variant on every level of
+    prm/`scene`: the fastest of `runs` runs. `variants` maps a name to
+    (binary or None for build/fosls-contact, its own settings), in addition
+    to `settings` and Geometry/Levels. The variants run alternately, each
+    first in turn, so that all of them see the same spells of the machine
+    (single runs of one binary scatter by 10-65% here, doc/performance.md
+    section 1). Returns {(name, level): (us per cycle per DoF, summary of
+    that run)}; prints every run."""
+    names = list(variants)
+    best = {}
+    for k in range(runs):
+        for level in levels:
+            shift = (k + level) % len(names)
+            for name in names[shift:] + names[:shift]:
+                binary, own = variants[name]
+                out = os.path.join(RES, f"{tag}_{name}_L{level}_{processes}x{threads}")
+                s = run(scene, dict(settings, **own, **{"Geometry/Levels": str(level)}),
+                        processes, threads, out, binary=binary)
+                per_dof = s["time_solve_s"] / max(s["cycles"], 1) / s["dofs"] * 1e6
+                if (name, level) not in best or per_dof < best[(name, level)][0]:
+                    best[(name, level)] = (per_dof, s)
+                print(f"run {k + 1}/{runs} level {level} {label(processes, threads)} {name}: "
+                      f"{per_dof:.3f} us per cycle per DoF, {s['cycles']} cycles", flush=True)
+    return best
+
+
 def label(processes, threads):
     return f"{processes} x {threads}"
 

@@ -81,6 +81,11 @@ namespace FoslsContact
     if (n_processes > 1)
       pcout << "       " << n_processes << " MPI processes, "
             << MultithreadInfo::n_threads() << " thread(s) each" << std::endl;
+    const auto &m = parameters.material;
+    pcout << "       material: mu = " << m.mu << ", lambda = " << m.lambda
+          << " (E = " << m.youngs_modulus << ", nu = " << m.poisson_ratio
+          << "); solved in units of L = " << scene.scaling().length
+          << ", S = " << scene.scaling().stress << std::endl;
     if (scene.has_contact())
       {
         unsigned int n_vertices = 0, n_faces = 0;
@@ -105,7 +110,7 @@ namespace FoslsContact
     Timer              wall;
     const unsigned int L = discretization->finest_level();
     qp.reinit(discretization->level(L));
-    FoslsAssembler<dim>(*discretization, parameters.material, parameters.weights)
+    FoslsAssembler<dim>(*discretization, parameters.weights)
       .assemble(L, qp);
     time_setup += wall.wall_time();
   }
@@ -273,7 +278,7 @@ namespace FoslsContact
       {
         ConstrainedQP coarse;
         coarse.reinit(discretization->level(level));
-        FoslsAssembler<dim>(*discretization, parameters.material, w)
+        FoslsAssembler<dim>(*discretization, w)
           .assemble(level, coarse);
         check(coarse);
       }
@@ -337,7 +342,7 @@ namespace FoslsContact
   {
     ConstrainedQP level_qp;
     level_qp.reinit(discretization->level(level));
-    FoslsAssembler<dim>(*discretization, parameters.material, parameters.weights)
+    FoslsAssembler<dim>(*discretization, parameters.weights)
       .assemble(level, level_qp);
     LevelVector x = level_qp.new_vector();
     if (start)
@@ -421,7 +426,8 @@ namespace FoslsContact
     penetration = Utilities::MPI::max(penetration, qp.get_communicator());
     if (penetration > 1e-12)
       pcout << "Initial guess violates the contact constraints by "
-            << std::scientific << std::setprecision(3) << penetration
+            << std::scientific << std::setprecision(3)
+            << penetration * scene.scaling().length
             << std::defaultfloat << ": projected onto the feasible set"
             << std::endl;
   }
@@ -452,6 +458,7 @@ namespace FoslsContact
                                         parameters.solver,
                                         pcout,
                                         solver_name(parameters.solver.type));
+    monitor->set_functional_unit(scene.scaling().functional(dim));
     const CommunicationCounter before = communication();
     solver->solve(qp, solution, *monitor);
     time_solve          = wall.wall_time();
@@ -478,10 +485,17 @@ namespace FoslsContact
   {
     TimerOutput::Scope      t(timer, "Output");
     Postprocessor<dim>      post(*discretization, parameters);
-    const LevelVector       cartesian = post.cartesian_active(solution);
+    const LevelVector       cartesian = post.solution_in_scene_units(solution);
     const Tensor<1, dim>    force     = post.contact_force(cartesian);
-    const FunctionalValue   J         = qp.parts(solution);
+    const FunctionalValue   J_hat     = qp.parts(solution);
     const KKTResidual       kkt       = qp.kkt_residual(solution);
+    // J in the scene's units (Scaling::functional())
+    const double            J_unit    = scene.scaling().functional(dim);
+    FunctionalValue         J         = J_hat;
+    J.total *= J_unit;
+    J.eq *= J_unit;
+    J.constitutive *= J_unit;
+    J.complementarity *= J_unit;
 
     Utilities::System::MemoryStats memory;
     Utilities::System::get_memory_stats(memory);
@@ -504,10 +518,25 @@ namespace FoslsContact
     summary["functional_eq"]    = number(J.eq);
     summary["functional_const"] = number(J.constitutive);
     summary["functional_compl"] = number(J.complementarity);
+    summary["functional_dimensionless"] = number(J_hat.total);
+    summary["scaling"] = "{\"length\": " + number(scene.scaling().length) +
+                         ", \"stress\": " + number(scene.scaling().stress) + "}";
+    {
+      const auto &m      = parameters.material;
+      summary["material"] = "{\"mu\": " + number(m.mu) + ", \"lambda\": " +
+                            (std::isinf(m.lambda) ? std::string("\"inf\"") : number(m.lambda)) +
+                            ", \"E\": " + number(m.youngs_modulus) +
+                            ", \"nu\": " + number(m.poisson_ratio) + "}";
+    }
     std::string f = "[";
     for (unsigned int d = 0; d < dim; ++d)
       f += (d ? ", " : "") + number(force[d]);
     summary["contact_force"]         = f + "]";
+    {
+      const FieldMaxima maxima   = post.field_maxima(cartesian);
+      summary["max_displacement"] = number(maxima.displacement);
+      summary["max_von_mises"]    = number(maxima.von_mises);
+    }
     summary["kkt_residual"]          = number(kkt.max());
     summary["max_violation"]         = number(qp.max_violation(solution));
     summary["active"]                = std::to_string(qp.n_active(solution));

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <sstream>
 
 namespace FoslsContact
 {
@@ -43,6 +44,29 @@ namespace FoslsContact
                              "', which is neither a number nor 'inf'"));
       return 0;
     }
+
+    namespace
+    {
+      /**
+       * A body of size @p size at distance @p distance from the origin has
+       * vertex coordinates that must resolve the cells of the finest level
+       * (size / 2^13 with 14 levels) in double precision: refuse a size
+       * below 1e-6 of the distance, naming @p what, instead of meeting
+       * degenerate cells later. (Any size itself is fine: the program works
+       * in units of the body's size, Scaling.)
+       */
+      void
+      check_resolvable(const double size, const double distance, const std::string &what)
+      {
+        AssertThrow(std::isfinite(size) && std::isfinite(distance),
+                    ExcMessage(what + " is too large for double precision"));
+        std::ostringstream text;
+        text << what << " (" << size << ") is too small against the distance of the body "
+             << "from the origin (" << distance << ") to be resolved in double precision; "
+             << "put the origin near the body";
+        AssertThrow(size > 1e-6 * distance, ExcMessage(text.str()));
+      }
+    } // namespace
 
     std::vector<double>
     parse_double_list(const std::string &text)
@@ -140,12 +164,21 @@ namespace FoslsContact
             AssertThrow(lower_corner[d] < upper_corner[d],
                         ExcMessage("Geometry/Box lower corner must be below "
                                    "Box upper corner in every coordinate"));
+          for (unsigned int d = 0; d < dimension; ++d)
+            check_resolvable(upper_corner[d] - lower_corner[d],
+                             std::max(std::abs(lower_corner[d]), std::abs(upper_corner[d])),
+                             "the side of 'Geometry/Box lower corner' to 'Box upper corner'");
         }
       else
         {
           AssertThrow(dimension == 2,
                       ExcMessage("Geometry/Shape = half disc needs Dimension = 2"));
           AssertThrow(radius > 0, ExcMessage("parameter 'Geometry/Radius' must be > 0"));
+          AssertThrow(center.size() == 2,
+                      ExcMessage("parameter 'Geometry/Center' needs 2 entries"));
+          check_resolvable(radius,
+                           std::max(std::abs(center[0]), std::abs(center[1])),
+                           "parameter 'Geometry/Radius'");
         }
     }
 
@@ -154,12 +187,29 @@ namespace FoslsContact
     Material::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Material");
-      prm.declare_entry("mu", "1", Patterns::Double(0), "Shear modulus mu > 0.");
-      prm.declare_entry("lambda",
-                        "1",
+      prm.declare_entry("mu",
+                        "",
                         Patterns::Anything(),
-                        "Lame parameter lambda >= 0, or 'inf' for an "
+                        "Shear modulus mu > 0, given with lambda. The material is "
+                        "given either by mu and lambda or by E and nu (exactly one "
+                        "pair), in any consistent units.");
+      prm.declare_entry("lambda",
+                        "",
+                        Patterns::Anything(),
+                        "Lame's first parameter lambda, given with mu: a number "
+                        "> -2 mu / dim (a positive bulk modulus), or 'inf' for an "
                         "incompressible material (exact, no penalty).");
+      prm.declare_entry("E",
+                        "",
+                        Patterns::Anything(),
+                        "Young's modulus E > 0, given with nu (instead of mu and "
+                        "lambda).");
+      prm.declare_entry("nu",
+                        "",
+                        Patterns::Anything(),
+                        "Poisson's ratio nu, -1 < nu <= 0.5, given with E; 0.5 is the "
+                        "incompressible material (lambda = inf). In 2D the body is "
+                        "in plane strain.");
       prm.leave_subsection();
     }
 
@@ -167,12 +217,98 @@ namespace FoslsContact
     Material::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Material");
-      mu     = prm.get_double("mu");
-      lambda = parse_extended_double(prm.get("lambda"), "Material/lambda");
+      const std::string mu_text     = Utilities::trim(prm.get("mu"));
+      const std::string lambda_text = Utilities::trim(prm.get("lambda"));
+      const std::string e_text      = Utilities::trim(prm.get("E"));
+      const std::string nu_text     = Utilities::trim(prm.get("nu"));
       prm.leave_subsection();
-      AssertThrow(mu > 0, ExcMessage("parameter 'Material/mu' must be > 0"));
-      AssertThrow(lambda >= 0,
-                  ExcMessage("parameter 'Material/lambda' must be >= 0 or inf"));
+
+      const bool lame        = !mu_text.empty() || !lambda_text.empty();
+      const bool engineering = !e_text.empty() || !nu_text.empty();
+      AssertThrow(lame != engineering,
+                  ExcMessage(std::string("subsection 'Material' needs exactly one pair of "
+                                         "constants, 'mu' and 'lambda' or 'E' and 'nu'; ") +
+                             (lame ? "both pairs are given" : "none is given")));
+      if (lame)
+        {
+          AssertThrow(!mu_text.empty() && !lambda_text.empty(),
+                      ExcMessage(std::string("parameter 'Material/") +
+                                 (mu_text.empty() ? "lambda' is given without 'Material/mu'" :
+                                                    "mu' is given without 'Material/lambda'")));
+          mu     = parse_extended_double(mu_text, "Material/mu");
+          lambda = parse_extended_double(lambda_text, "Material/lambda");
+          AssertThrow(std::isfinite(mu) && mu > 0,
+                      ExcMessage("parameter 'Material/mu' = " + mu_text +
+                                 " must be a number > 0"));
+          // (the bound on lambda, which depends on the dimension, is
+          // checked by AllParameters::parse_parameters)
+          youngs_modulus = std::isinf(lambda) ? 3. * mu :
+                                                mu * (3. * lambda + 2. * mu) / (lambda + mu);
+          poisson_ratio  = std::isinf(lambda) ? 0.5 : lambda / (2. * (lambda + mu));
+        }
+      else
+        {
+          AssertThrow(!e_text.empty() && !nu_text.empty(),
+                      ExcMessage(std::string("parameter 'Material/") +
+                                 (e_text.empty() ? "nu' is given without 'Material/E'" :
+                                                   "E' is given without 'Material/nu'")));
+          youngs_modulus = parse_extended_double(e_text, "Material/E");
+          poisson_ratio  = parse_extended_double(nu_text, "Material/nu");
+          AssertThrow(std::isfinite(youngs_modulus) && youngs_modulus > 0,
+                      ExcMessage("parameter 'Material/E' = " + e_text +
+                                 " must be a number > 0"));
+          AssertThrow(poisson_ratio > -1 && poisson_ratio <= 0.5,
+                      ExcMessage("parameter 'Material/nu' = " + nu_text +
+                                 " must lie in (-1, 0.5]"));
+          const double nu = poisson_ratio;
+          mu              = youngs_modulus / (2. * (1. + nu));
+          lambda          = nu == 0.5 ? std::numeric_limits<double>::infinity() :
+                                        youngs_modulus * nu / ((1. + nu) * (1. - 2. * nu));
+        }
+    }
+
+
+    void
+    Scaling::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Scaling");
+      prm.declare_entry("Reference length",
+                        "auto",
+                        Patterns::Anything(),
+                        "The length L the program divides all lengths by, in the "
+                        "scene's units: a number > 0, or auto: the largest side of "
+                        "the bounding box of the coarse mesh. The problem is solved "
+                        "in dimensionless form and every output is in the scene's "
+                        "units; the functional weights mean the same functional in "
+                        "every unit system for the same L (doc/method.md, section 1). "
+                        "Models that are parts of one another (a symmetric half) "
+                        "need the same L to have the same functional.");
+      prm.declare_entry("Reference stress",
+                        "auto",
+                        Patterns::Anything(),
+                        "The stress S the program divides all stresses by, in the "
+                        "scene's units: a number > 0, or auto: the shear modulus mu.");
+      prm.leave_subsection();
+    }
+
+    void
+    Scaling::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Scaling");
+      const std::string length_text = Utilities::trim(prm.get("Reference length"));
+      const std::string stress_text = Utilities::trim(prm.get("Reference stress"));
+      prm.leave_subsection();
+      auto parse = [](const std::string &text, const std::string &name) {
+        if (text == "auto")
+          return 0.;
+        const double value = parse_extended_double(text, name);
+        AssertThrow(std::isfinite(value) && value > 0,
+                    ExcMessage("parameter '" + name + "' = " + text +
+                               " must be 'auto' or a number > 0"));
+        return value;
+      };
+      reference_length = parse(length_text, "Scaling/Reference length");
+      reference_stress = parse(stress_text, "Scaling/Reference stress");
     }
 
 
@@ -194,8 +330,10 @@ namespace FoslsContact
                         "Weight of the complementarity term <u.n - g, (sigma n).n> "
                         "(paper eq. 2). Too large a value makes the problem "
                         "indefinite; the program checks and refuses. The "
-                        "paper's 1e1 is indefinite for mu = 1, C_const = 1 "
-                        "(see doc/method.md), hence the default 0.1.");
+                        "paper's 1e1 is indefinite with C_const = 1 (see "
+                        "doc/method.md, section 5), hence the default 0.1. The "
+                        "three weights apply to the dimensionless terms "
+                        "(Scaling), so they mean the same in every unit system.");
       prm.leave_subsection();
     }
 
@@ -537,6 +675,7 @@ namespace FoslsContact
     {
       Geometry::declare_parameters(prm);
       Material::declare_parameters(prm);
+      Scaling::declare_parameters(prm);
       Weights::declare_parameters(prm);
       Data::declare_parameters(prm);
       BoundaryConditions::declare_parameters(prm);
@@ -549,7 +688,18 @@ namespace FoslsContact
     {
       geometry.parse_parameters(prm);
       material.parse_parameters(prm);
+      scaling.parse_parameters(prm);
       weights.parse_parameters(prm);
+      // a positive bulk modulus: lambda + 2 mu / dim > 0 (always so for E
+      // and nu in their ranges)
+      {
+        std::ostringstream text;
+        text << "parameter 'Material/lambda' = " << material.lambda
+             << " must be > -2 mu / dim = " << -2. * material.mu / geometry.dimension
+             << " (a positive bulk modulus), or inf";
+        AssertThrow(material.lambda > -2. * material.mu / geometry.dimension,
+                    ExcMessage(text.str()));
+      }
       data.parse_parameters(prm);
       boundary_conditions.parse_parameters(prm);
       solver.parse_parameters(prm);

@@ -49,11 +49,34 @@ namespace FoslsContact
       void        parse_parameters(ParameterHandler &prm);
     };
 
-    /** subsection Material: Lame parameters; lambda may be `inf`. */
+    /**
+     * subsection Material: the elastic constants, given either as the Lame
+     * parameters (mu, lambda) or as Young's modulus and Poisson's ratio
+     * (E, nu), exactly one of the two pairs, in any consistent units. The
+     * other pair is computed; lambda = inf and nu = 0.5 are the
+     * incompressible material.
+     */
     struct Material
     {
       double mu     = 1.;
       double lambda = 1.; ///< +infinity for incompressible material
+      double youngs_modulus = 2.5;  ///< E
+      double poisson_ratio  = 0.25; ///< nu
+
+      static void declare_parameters(ParameterHandler &prm);
+      void        parse_parameters(ParameterHandler &prm);
+    };
+
+    /**
+     * subsection Scaling: the reference length L and stress S that make the
+     * problem dimensionless (doc/method.md, section 1). A value of 0 means
+     * "derive it": L from the coarse mesh (the largest side of its bounding
+     * box), S = mu.
+     */
+    struct Scaling
+    {
+      double reference_length = 0.;
+      double reference_stress = 0.;
 
       static void declare_parameters(ParameterHandler &prm);
       void        parse_parameters(ParameterHandler &prm);
@@ -195,6 +218,7 @@ namespace FoslsContact
     {
       Geometry           geometry;
       Material           material;
+      Scaling            scaling;
       Weights            weights;
       Data               data;
       BoundaryConditions boundary_conditions;

@@ -11,11 +11,10 @@
 namespace FoslsContact
 {
   template <int dim>
-  FoslsAssembler<dim>::FoslsAssembler(const Discretization<dim> & discretization,
-                                      const Parameters::Material &material,
-                                      const Parameters::Weights & weights)
+  FoslsAssembler<dim>::FoslsAssembler(const Discretization<dim> &discretization,
+                                      const Parameters::Weights &weights)
     : discretization(discretization)
-    , material(material)
+    , material(discretization.get_scene().material())
     , weights(weights)
   {}
 

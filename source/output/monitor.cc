@@ -34,7 +34,7 @@ namespace FoslsContact
     r.violation = qp.max_violation(x);
     history.push_back(r);
     pcout << "  " << solver_name << ": start  J = " << std::scientific
-          << std::setprecision(6) << r.functional.total
+          << std::setprecision(6) << functional_unit * r.functional.total
           << "  active = " << r.active << std::endl;
   }
 
@@ -59,9 +59,9 @@ namespace FoslsContact
     AssertThrow(std::isfinite(r.functional.total) && std::isfinite(r.correction),
                 ExcMessage(solver_name + ": the iterate became NaN/Inf at "
                            "iteration " + std::to_string(r.iteration) +
-                           " (the data are finite, checked at the start: the problem is "
-                           "likely too badly scaled for double precision, e.g. a "
-                           "'Material/mu' far from 1 with these 'Functional weights')"));
+                           " (the data are finite, checked at the start: the functional "
+                           "is likely too badly conditioned for double precision with "
+                           "these 'Functional weights')"));
     history.push_back(r);
     // (the active set changed if it changed on any process)
     if (Utilities::MPI::max(active != active_set ? 1u : 0u, qp.get_communicator()) == 1)
@@ -155,7 +155,7 @@ namespace FoslsContact
 
     pcout << "  " << solver_name << ": it " << std::setw(3) << r.iteration
           << "  J = " << std::scientific << std::setprecision(6)
-          << r.functional.total << "  |dx|_A/|dx_1|_A = " << std::setprecision(2)
+          << functional_unit * r.functional.total << "  |dx|_A/|dx_1|_A = " << std::setprecision(2)
           << r.correction / norm_x << "  rate = " << std::fixed
           << std::setprecision(3) << r.rate << "  active = " << r.active
           << std::endl;
@@ -207,10 +207,11 @@ namespace FoslsContact
     out << "iteration,functional,functional_eq,functional_const,"
            "functional_compl,correction,rate,active,violation,wall_seconds\n";
     out << std::setprecision(12);
+    const double u = functional_unit;
     for (const auto &r : history)
-      out << r.iteration << ',' << r.functional.total << ',' << r.functional.eq
-          << ',' << r.functional.constitutive << ','
-          << r.functional.complementarity << ',' << r.correction << ','
+      out << r.iteration << ',' << u * r.functional.total << ',' << u * r.functional.eq
+          << ',' << u * r.functional.constitutive << ','
+          << u * r.functional.complementarity << ',' << std::sqrt(u) * r.correction << ','
           << r.rate << ',' << r.active << ',' << r.violation << ','
           << r.wall_seconds << '\n';
     return out.str();

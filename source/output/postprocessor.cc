@@ -1,10 +1,12 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <fosls_contact/assembly/fosls_assembler.h>
 #include <fosls_contact/output/postprocessor.h>
+#include <fosls_contact/output/stress_measures.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -37,7 +39,7 @@ namespace FoslsContact
         for (unsigned int q = 0; q < computed.size(); ++q)
           {
             if (scene.has_body_force())
-              scene.body_force().vector_value(inputs.evaluation_points[q], f);
+              scene.body_force_in_scene_units().vector_value(inputs.evaluation_points[q], f);
             for (unsigned int m = 0; m < dim; ++m)
               {
                 double div = 0;
@@ -67,18 +69,36 @@ namespace FoslsContact
                                     const Parameters::AllParameters &parameters)
     : discretization(discretization)
     , parameters(parameters)
+    , scaling(discretization.get_scene().scaling())
+    , mapping(dynamic_cast<const MappingQ<dim> &>(discretization.get_mapping()).get_degree(),
+              scaling.length)
   {}
 
 
   template <int dim>
   LevelVector
-  Postprocessor<dim>::cartesian_active(const LevelVector &x_rotated) const
+  Postprocessor<dim>::solution_in_scene_units(const LevelVector &x_rotated) const
   {
     // (a rotation block is the DoFs of one vertex or face, of one owner:
     // to_active() brings the owners' rotated values to the ghost copies)
     LevelVector x = x_rotated;
     discretization.rotate_to_cartesian(discretization.finest_level(), x);
-    return discretization.to_active(x);
+    LevelVector active = discretization.to_active(x);
+    if (scaling.length == 1. && scaling.stress == 1.)
+      return active;
+    // with the PhysicalMapping: displacements (nodal values) times L,
+    // stresses (Raviart-Thomas fluxes) times S L^(dim-1)
+    const auto &    dof_handler = discretization.get_dof_handler();
+    const IndexSet  displacement_dofs =
+      DoFTools::extract_dofs(dof_handler,
+                             discretization.get_fe().component_mask(
+                               FEValuesExtractors::Vector(0)));
+    const double    u_factor = scaling.length, sigma_factor = scaling.force(dim);
+    const IndexSet &owned    = dof_handler.locally_owned_dofs();
+    for (const auto i : owned)
+      active[i] *= displacement_dofs.is_element(i) ? u_factor : sigma_factor;
+    active.update_ghost_values();
+    return active;
   }
 
 
@@ -91,7 +111,7 @@ namespace FoslsContact
     if (!scene.has_contact())
       return force;
     const QGauss<dim - 1> quadrature(3);
-    FEFaceValues<dim>     fe_face(discretization.get_mapping(),
+    FEFaceValues<dim>     fe_face(mapping,
                               discretization.get_fe(),
                               quadrature,
                               update_values | update_normal_vectors |
@@ -125,7 +145,7 @@ namespace FoslsContact
     if (!scene.has_exact_solution())
       return e;
     const QGauss<dim> quadrature(4);
-    FEValues<dim>     fe_values(discretization.get_mapping(),
+    FEValues<dim>     fe_values(mapping,
                             discretization.get_fe(),
                             quadrature,
                             update_values | update_gradients |
@@ -191,6 +211,47 @@ namespace FoslsContact
 
 
   template <int dim>
+  FieldMaxima
+  Postprocessor<dim>::field_maxima(const LevelVector &solution) const
+  {
+    const QTrapezoid<dim>            corners;
+    FEValues<dim>                    fe_values(mapping,
+                            discretization.get_fe(),
+                            corners,
+                            update_values);
+    const FEValuesExtractors::Vector displacement(0);
+    const unsigned int               n = corners.size();
+    std::vector<Tensor<1, dim>>      u(n), row(n);
+    std::vector<Tensor<2, dim>>      sigma(n);
+    FieldMaxima                      maxima;
+    for (const auto &cell : discretization.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_values(solution, u);
+          for (unsigned int m = 0; m < dim; ++m)
+            {
+              fe_values[FEValuesExtractors::Vector(dim + m * dim)].get_function_values(solution,
+                                                                                     row);
+              for (unsigned int q = 0; q < n; ++q)
+                sigma[q][m] = row[q];
+            }
+          for (unsigned int q = 0; q < n; ++q)
+            {
+              maxima.displacement = std::max(maxima.displacement, u[q].norm());
+              maxima.von_mises =
+                std::max(maxima.von_mises,
+                         StressMeasures::von_mises(sigma[q], parameters.material.poisson_ratio));
+            }
+        }
+    const MPI_Comm comm = discretization.get_communicator();
+    maxima.displacement = Utilities::MPI::max(maxima.displacement, comm);
+    maxima.von_mises    = Utilities::MPI::max(maxima.von_mises, comm);
+    return maxima;
+  }
+
+
+  template <int dim>
   std::string
   Postprocessor<dim>::contact_table(const LevelVector &x) const
   {
@@ -227,10 +288,10 @@ namespace FoslsContact
             it == face_mean.end() ? 0. : it->second.first / it->second.second;
           std::array<double, dim + 4> row;
           for (unsigned int d = 0; d < dim; ++d)
-            row[d] = cv.point[d];
-          row[dim]     = un;
-          row[dim + 1] = cv.gap;
-          row[dim + 2] = snn;
+            row[d] = scaling.length * cv.point[d];
+          row[dim]     = scaling.length * un;
+          row[dim + 1] = scaling.length * cv.gap;
+          row[dim + 2] = scaling.stress * snn;
           row[dim + 3] = un >= cv.gap - 1e-12 * std::max(1., std::abs(cv.gap)) ? 1 : 0;
           rows.push_back(row);
         }
@@ -285,7 +346,7 @@ namespace FoslsContact
     const std::string table = contact_table(x); // (collective)
     if (parameters.output.write_vtu)
       {
-        const LevelVector solution = cartesian_active(x);
+        const LevelVector solution = solution_in_scene_units(x);
         DataOut<dim>         data_out;
         data_out.attach_dof_handler(discretization.get_dof_handler());
         std::vector<std::string> names(dim, "u");
@@ -306,7 +367,7 @@ namespace FoslsContact
         Vector<float> indicator(tria.n_active_cells()), status(tria.n_active_cells());
         {
           const QGauss<dim> quadrature(3);
-          FEValues<dim>     fe_values(discretization.get_mapping(),
+          FEValues<dim>     fe_values(mapping,
                                   discretization.get_fe(),
                                   quadrature,
                                   update_values | update_gradients |
@@ -361,7 +422,7 @@ namespace FoslsContact
                                  DataOut<dim>::type_cell_data);
         data_out.add_data_vector(status, "contact_status",
                                  DataOut<dim>::type_cell_data);
-        data_out.build_patches(discretization.get_mapping());
+        data_out.build_patches(mapping);
         // zlib's default level spent more time than the solve on large
         // meshes (13% of a level-8 run); best_speed files are ~10% larger
         DataOutBase::VtkFlags flags;

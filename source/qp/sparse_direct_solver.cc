@@ -9,9 +9,9 @@ namespace FoslsContact
   {
     const std::string singular_matrix_message =
       "the sparse direct solver (Amesos KLU) found the matrix singular in floating point; "
-      "the usual cause is a 'Material/mu' far from 1 with these 'Functional weights' (the "
-      "constitutive term scales like 1/mu^2 against the equilibrium term: measured, mu = 1e7 "
-      "fails): scale the units so that mu is about 1";
+      "the functional is too badly conditioned for double precision: check that the "
+      "'Functional weights' are not many orders of magnitude apart (measured: C_eq / "
+      "C_const = 1e40 fails)";
   } // namespace
 
   SparseDirectSolver::SparseDirectSolver()

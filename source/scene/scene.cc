@@ -34,6 +34,14 @@ namespace FoslsContact
     : geometry(prm.geometry)
     , dirichlet_masks(prm.boundary_conditions.dirichlet_components)
   {
+    reference.length = reference_length(prm);
+    reference.stress =
+      prm.scaling.reference_stress > 0 ? prm.scaling.reference_stress : prm.material.mu;
+    dimensionless_material = prm.material;
+    dimensionless_material.mu /= reference.stress;
+    dimensionless_material.lambda /= reference.stress;
+    dimensionless_material.youngs_modulus /= reference.stress;
+
     const auto &bc = prm.boundary_conditions;
     dirichlet_ids.insert(bc.dirichlet_ids.begin(), bc.dirichlet_ids.end());
     neumann_ids.insert(bc.neumann_ids.begin(), bc.neumann_ids.end());
@@ -97,6 +105,40 @@ namespace FoslsContact
       initial_u_function = make_function(data.initial_displacement,
                                          dim,
                                          "Data/Initial displacement");
+
+    // the dimensionless data: f L/S, u/L, t/S, g/L
+    const double L = reference.length, S = reference.stress;
+    auto scaled = [L](const std::unique_ptr<FunctionParser<dim>> &f, const double factor) {
+      return f ? std::make_unique<ScaledFunction<dim>>(*f, L, factor) : nullptr;
+    };
+    body_force_scaled = scaled(body_force_function, L / S);
+    dirichlet_scaled  = scaled(dirichlet_function, 1. / L);
+    traction_scaled   = scaled(traction_function, 1. / S);
+    gap_scaled        = scaled(gap_function, 1. / L);
+    initial_u_scaled  = scaled(initial_u_function, 1. / L);
+  }
+
+
+  template <int dim>
+  double
+  Scene<dim>::reference_length(const Parameters::AllParameters &prm) const
+  {
+    if (prm.scaling.reference_length > 0)
+      return prm.scaling.reference_length;
+    // the largest side of the coarse mesh's bounding box (of the half
+    // disc: its diameter)
+    double length = 0;
+    if (geometry.shape == Parameters::Geometry::Shape::box)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          length = std::max(length, geometry.upper_corner[d] - geometry.lower_corner[d]);
+        AssertThrow(std::isfinite(length),
+                    ExcMessage("parameters 'Geometry/Box lower corner' and 'Box upper "
+                               "corner' span more than the largest double precision number"));
+      }
+    else
+      length = 2. * geometry.radius;
+    return length;
   }
 
 
@@ -153,7 +195,10 @@ namespace FoslsContact
                            "' has " + std::to_string(expressions.size()) +
                            " component(s) separated by ';', expected " +
                            std::to_string(n_components)));
-    auto function = std::make_unique<FunctionParser<dim>>(n_components);
+    // (the step of its finite-difference gradients is relative to L, so
+    // that they are equally accurate in every unit system)
+    auto function =
+      std::make_unique<FunctionParser<dim>>(n_components, 0., 1e-8 * reference.length);
     const std::string variables = (dim == 2 ? "x,y" : "x,y,z");
     // deal.II parses lazily: initialize, then evaluate once so that a
     // malformed expression is reported here, with the parameter's name, and
@@ -168,7 +213,7 @@ namespace FoslsContact
         function->initialize(variables, expressions, constants);
         Point<dim> p;
         for (unsigned int d = 0; d < dim; ++d)
-          p[d] = 0.123 + 0.1 * d;
+          p[d] = (0.123 + 0.1 * d) * reference.length;
         Vector<double> values(n_components);
         function->vector_value(p, values);
       }
@@ -227,7 +272,7 @@ namespace FoslsContact
   {
     Tensor<1, dim> n;
     for (unsigned int d = 0; d < dim; ++d)
-      n[d] = normal_function->value(p, d);
+      n[d] = normal_function->value(reference.length * p, d);
     const double norm = n.norm();
     AssertThrow(norm > 1e-12 && std::isfinite(norm),
                 ExcMessage("parameter 'Data/Obstacle normal' evaluates to a "
@@ -246,8 +291,8 @@ namespace FoslsContact
         std::vector<unsigned int> repetitions(dim);
         for (unsigned int d = 0; d < dim; ++d)
           {
-            p1[d]          = geometry.lower_corner[d];
-            p2[d]          = geometry.upper_corner[d];
+            p1[d]          = geometry.lower_corner[d] / reference.length;
+            p2[d]          = geometry.upper_corner[d] / reference.length;
             repetitions[d] = geometry.subdivisions[d];
           }
         GridGenerator::subdivided_hyper_rectangle(tria, repetitions, p1, p2, true);
@@ -263,8 +308,8 @@ namespace FoslsContact
         Assert(dim == 2, ExcInternalError());
         Point<dim> center;
         for (unsigned int d = 0; d < dim; ++d)
-          center[d] = geometry.center[d];
-        const double radius = geometry.radius;
+          center[d] = geometry.center[d] / reference.length;
+        const double radius = geometry.radius / reference.length;
 
         Triangulation<dim> half;
         GridGenerator::half_hyper_ball(half, Point<dim>(), radius);

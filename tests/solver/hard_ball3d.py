@@ -4,8 +4,8 @@
 # (mu = lambda = 1) pushed down by 0.05 onto a rigid ball of radius R = 2,
 # 4 levels (27771 DoFs), default solver. Hertz (rigid sphere on an elastic
 # half-space): E* = E/(1 - nu^2), a = (3 F R / (4 E*))^(1/3),
-# p0 = 3 F / (2 pi a^2), with F the computed total force. Measured (Nov
-# 2026): 3 iterations, F = 0.0773, Hertz a = 0.352 between the largest
+# p0 = 3 F / (2 pi a^2), with F the computed total force. Measured:
+# 4 iterations, F = 0.0773, Hertz a = 0.352 between the largest
 # active contact vertex radius 0.280 and the smallest inactive one 0.354,
 # computed peak pressure 0.287 vs p0 = 0.2985 (3.8% low; the block is
 # only 3 contact radii thick, and the pressure is a vertex value of a

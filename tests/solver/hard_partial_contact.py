@@ -63,7 +63,7 @@ R = Runner(sys.argv)
 for label, prm, scene in [
         ("cylinder R = 1, 5 levels", "prm/square.prm",
          ["Geometry/Levels=5", "Data/Gap=1 - sqrt(1 - (x-0.5)^2)"]),
-        ("half disc, 4 levels", "prm/hertz.prm", ["Geometry/Levels=4"])]:
+        ("half disc, 4 levels", "prm/hertz.prm", ["Geometry/Grading=1", "Geometry/Levels=4"])]:
     reference = R.run(prm, scene + ["Solver/Type=active set"], "reference")
     run = R.run(prm, scene + ["Solver/Max iterations=30"], "multigrid")
     check(run.ok() and run["converged"] is True and run["iterations"] <= 30,
@@ -81,9 +81,9 @@ for label, prm, scene, force_tolerance in [
           "Geometry/Box subdivisions=2, 1, 1", "Data/Obstacle normal=0; 0.3; -1",
           "Data/Gap=0.008*x*x + 0.001*y"], "1e-8"),
         ("half disc, 4 levels, C_compl = 0.01", "prm/hertz.prm",
-         ["Geometry/Levels=4", "Functional weights/C_compl=0.01"], "1e-8"),
+         ["Geometry/Grading=1", "Geometry/Levels=4", "Functional weights/C_compl=0.01"], "1e-8"),
         ("half disc, 4 levels, C_compl = 0", "prm/hertz.prm",
-         ["Geometry/Levels=4", "Functional weights/C_compl=0"], "1e-6")]:
+         ["Geometry/Grading=1", "Geometry/Levels=4", "Functional weights/C_compl=0"], "1e-6")]:
     reference = R.run(prm, scene + ["Solver/Type=active set"], "reference")
     run = R.run(prm, scene + ["Solver/Max iterations=30"], "multigrid")
     check(run.ok() and run["converged"] is True and run["iterations"] <= 8,

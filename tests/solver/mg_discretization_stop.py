@@ -22,7 +22,7 @@ from fosls_runs import Runner, check, describe, finish
 
 R = Runner(sys.argv)
 for label, prm, scene in [
-        ("half disc, 4 levels", "prm/hertz.prm", ["Geometry/Levels=4"]),
+        ("half disc, 4 levels", "prm/hertz.prm", ["Geometry/Grading=1", "Geometry/Levels=4"]),
         ("square, 5 levels", "prm/square.prm", ["Geometry/Levels=5"])]:
     print("--- " + label)
     reference = R.run(prm, scene + ["Solver/Type=active set"],

@@ -66,11 +66,11 @@ def check_coarse_defects(run, label):
 scenes = [
     ("square", "prm/square.prm", ["Geometry/Levels=5"]),
     ("tilted", "prm/square.prm", ["Geometry/Levels=5"] + tilted),
-    ("hertz", "prm/hertz.prm", ["Geometry/Levels=2"]),
+    ("hertz", "prm/hertz.prm", ["Geometry/Grading=1", "Geometry/Levels=2"]),
     ("square zero start", "prm/square.prm", ["Geometry/Levels=5"] + zero),
     ("tilted zero start", "prm/square.prm",
      ["Geometry/Levels=5"] + tilted + zero),
-    ("hertz zero start", "prm/hertz.prm", ["Geometry/Levels=3"] + zero),
+    ("hertz zero start", "prm/hertz.prm", ["Geometry/Grading=1", "Geometry/Levels=3"] + zero),
 ]
 for label, prm, settings in scenes:
     from_zero = "zero" in label
@@ -100,7 +100,7 @@ for label, prm, settings in scenes:
                   and default["kkt_residual"] < 1e-10,
                   "default: converged, KKT residual < 1e-10")
 print("--- hertz zero start, projection b, 2 processes")
-plain = R.run("prm/hertz.prm", ["Geometry/Levels=3"] + zero + at_most_30
+plain = R.run("prm/hertz.prm", ["Geometry/Grading=1", "Geometry/Levels=3"] + zero + at_most_30
               + check_defects + ["Solver/Projection=b", "Solver/Krylov steps=0"],
               "hertz_zero_start_b_plain_np2", processes=2)
 describe(plain, "plain cycle")

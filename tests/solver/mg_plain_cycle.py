@@ -25,7 +25,7 @@ from fosls_runs import Runner, check, check_plain_cycle, finish
 
 R = Runner(sys.argv)
 for label, prm, scene in [
-        ("half disc, 2 levels", "prm/hertz.prm", ["Geometry/Levels=2"]),
+        ("half disc, 2 levels", "prm/hertz.prm", ["Geometry/Grading=1", "Geometry/Levels=2"]),
         ("square, zero start", "prm/square.prm",
          ["Geometry/Levels=4", "Solver/Initial guess=zero"]),
         ("square, C_compl = 0", "prm/square.prm",

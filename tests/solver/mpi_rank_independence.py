@@ -42,9 +42,9 @@ from fosls_runs import Runner, check, check_monotone_feasible, describe, \
 R = Runner(sys.argv)
 cases = [
     ("square, 5 levels", "prm/square.prm", ["Geometry/Levels=5"], [2, 4], True),
-    ("half disc, 3 levels", "prm/hertz.prm", ["Geometry/Levels=3"], [2, 3], True),
+    ("half disc, 3 levels", "prm/hertz.prm", ["Geometry/Grading=1", "Geometry/Levels=3"], [2, 3], True),
     ("half disc, 2 levels, plain cycle", "prm/hertz.prm",
-     ["Geometry/Levels=2", "Solver/Krylov steps=0"], [2, 3], True),
+     ["Geometry/Grading=1", "Geometry/Levels=2", "Solver/Krylov steps=0"], [2, 3], True),
     ("cube, 3 levels", "prm/cube3d.prm", ["Geometry/Levels=3"], [2, 4], True),
     ("square, 6 levels, F-cycle", "prm/square.prm",
      ["Geometry/Levels=6", "Solver/Cycle=F"], [2, 3], True),

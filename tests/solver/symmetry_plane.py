@@ -7,6 +7,8 @@
 # Before per-id components every roller was refused (a global component
 # list leaves a translation free); before the roller contact vertex, the
 # corner was a Dirichlet vertex, unconstrained in u.n.
+# A part and the full model have the same functional only with the same
+# reference length (Scaling): the parts are given the full model's 2.
 # Also refused, one line each: a roller meeting the contact boundary where
 # the obstacle normal is not a free axis, and malformed per-id lists.
 import csv
@@ -42,7 +44,8 @@ def compare(part, full, parts, label):
 # 2D: the square [-1, 1] x [0, 1] and its half [0, 1]^2 with a roller
 # (u_x = 0) on x = 0; gap even in x, so contact is partial
 gap2 = ["Data/Gap=0.008*x*x", "Geometry/Levels=5"]
-half = ["Boundary conditions/Dirichlet boundary ids=0, 3",
+half = ["Scaling/Reference length=2",
+        "Boundary conditions/Dirichlet boundary ids=0, 3",
         "Boundary conditions/Dirichlet components=0: 0",
         "Boundary conditions/Neumann boundary ids=1"]
 full = ["Geometry/Box lower corner=-1, 0", "Geometry/Box subdivisions=2, 1"]
@@ -59,16 +62,18 @@ for solver in ["monotone multigrid", "active set"]:
     check(f["active"] == 2 * p["active"] - 1,
           "2D, " + solver + ": active(full) = 2 active(half) - 1 (the plane's vertex once)")
 
-# the half on 2 processes: the roller contact vertex may be a ghost
-p2 = R.run("prm/square.prm", gap2 + half, name="half_np2", processes=2)
-p1 = halves["monotone multigrid"]
+# the half on 2 processes: the roller contact vertex may be a ghost (the
+# half square with its own reference length, 1)
+p2 = R.run("prm/square.prm", gap2 + half[1:], name="half_np2", processes=2)
+p1 = R.run("prm/square.prm", gap2 + half[1:], name="half_np1")
 check(p2.ok() and relative_difference(p2["functional"], p1["functional"]) < 1e-10,
       "2D half square on 2 processes: J as on 1 to 1e-10")
 
 # 3D: the cube [-1, 1]^2 x [0, 1] and its quarter [0, 1]^3 with rollers
 # u_x = 0 on x = 0 (id 0) and u_y = 0 on y = 0 (id 2)
 gap3 = ["Data/Gap=0.008*(x*x+y*y)", "Geometry/Levels=3"]
-quarter = ["Boundary conditions/Dirichlet boundary ids=0, 2, 5",
+quarter = ["Scaling/Reference length=2",
+           "Boundary conditions/Dirichlet boundary ids=0, 2, 5",
            "Boundary conditions/Dirichlet components=0: 0; 2: 1",
            "Boundary conditions/Neumann boundary ids=1, 3"]
 full3 = ["Geometry/Box lower corner=-1, -1, 0", "Geometry/Box subdivisions=2, 2, 1"]
@@ -105,7 +110,7 @@ for value, pattern in [("5: 0", "names boundary id 5, which is not in"),
                        ("0: 2", "has entry '2'; valid"),
                        ("0 0", "has entry '0 0'; valid"),
                        ("0:", "has entry '0:'; expected 'id: components'")]:
-    check_refused(R.run("prm/square.prm", half[:1] + half[2:] +
+    check_refused(R.run("prm/square.prm", half[:2] + half[3:] +
                   ["Boundary conditions/Dirichlet components=" + value], name="bad"),
             "Dirichlet components = '%s'" % value, pattern)
 finish()

@@ -46,7 +46,7 @@ struct Problem
   {
     const unsigned int L = discretization.finest_level();
     qp.reinit(discretization.level(L));
-    FoslsAssembler<2>(discretization, parameters.material, parameters.weights)
+    FoslsAssembler<2>(discretization, parameters.weights)
       .assemble(L, qp);
   }
 

@@ -36,7 +36,7 @@ main(int argc, char *argv[])
       const unsigned int      L = discretization.finest_level();
       ConstrainedQP           qp;
       qp.reinit(discretization.level(L));
-      FoslsAssembler<2>(discretization, parameters.material, parameters.weights)
+      FoslsAssembler<2>(discretization, parameters.weights)
         .assemble(L, qp);
       LevelVector              x = qp.new_vector();
       const ConditionalOStream quiet(std::cout, false);
@@ -48,7 +48,7 @@ main(int argc, char *argv[])
               ": no contact, one direct solve, KKT residual < 1e-10");
 
       const Postprocessor<2> post(discretization, parameters);
-      errors.push_back(post.errors(post.cartesian_active(x)));
+      errors.push_back(post.errors(post.solution_in_scene_units(x)));
       std::cout << "levels = " << levels << ": dofs = " << qp.size()
                 << ", error_u_l2 = " << rounded(errors.back().u_l2)
                 << ", error_u_h1 = " << rounded(errors.back().u_h1())

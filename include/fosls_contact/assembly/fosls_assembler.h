@@ -22,14 +22,17 @@ namespace FoslsContact
    *
    * Only declared effects are assembled: the body force enters only if the
    * scene has one, and the face integral over Gamma_C only with contact.
+   *
+   * Everything is dimensionless (Scaling): the mesh, the data and the
+   * elastic constants come from the scene in units of L and S, so the
+   * weights mean the same functional in every unit system.
    */
   template <int dim>
   class FoslsAssembler
   {
   public:
-    FoslsAssembler(const Discretization<dim> &     discretization,
-                   const Parameters::Material &    material,
-                   const Parameters::Weights &     weights);
+    FoslsAssembler(const Discretization<dim> &discretization,
+                   const Parameters::Weights &weights);
 
     /** Fill @p qp (sized with ConstrainedQP::reinit) on level @p level. */
     void assemble(const unsigned int level, ConstrainedQP &qp) const;

@@ -84,6 +84,15 @@ namespace FoslsContact
 
     const std::string &name() const { return solver_name; }
 
+    /**
+     * Print and write J (and the energy norms of the corrections, times
+     * the square root) multiplied by @p factor: the solvers work on the
+     * dimensionless functional, the user reads it in the scene's units
+     * (Scaling::functional()). The stopping rule is relative and does not
+     * see it.
+     */
+    void set_functional_unit(const double factor) { functional_unit = factor; }
+
   private:
 
     const ConstrainedQP &         qp;
@@ -105,6 +114,7 @@ namespace FoslsContact
     bool                          has_converged          = false;
     bool                          at_floor               = false;
     bool                          floor_stagnated        = false;
+    double                        functional_unit        = 1.;
   };
 } // namespace FoslsContact
 

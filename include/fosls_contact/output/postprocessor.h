@@ -5,6 +5,7 @@
 #include <fosls_contact/output/monitor.h>
 #include <fosls_contact/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
+#include <fosls_contact/scene/physical_mapping.h>
 
 #include <map>
 #include <string>
@@ -22,10 +23,19 @@ namespace FoslsContact
     }
   };
 
+  /** Extremes of the fields, in the scene's units. */
+  struct FieldMaxima
+  {
+    double displacement = 0; ///< max |u|
+    double von_mises    = 0; ///< max of the von Mises stress (StressMeasures)
+  };
+
   /**
    * The last box of the data path: rotates the solution back to Cartesian
-   * coordinates and computes what users look at (contact force, contact
-   * table, error norms), then writes every output file. All files are first
+   * coordinates, converts it to the scene's units (PhysicalMapping: the
+   * mesh times L, displacements times L, stresses times S) and computes
+   * what users look at (contact force, contact table, error norms), then
+   * writes every output file. All files are first
    * written into a staging directory and then renamed into the output
    * directory, so an interrupted run never leaves a half-written file.
    *
@@ -42,16 +52,33 @@ namespace FoslsContact
                   const Parameters::AllParameters &parameters);
 
     /**
-     * Solution (finest level, rotated basis) -> Cartesian active vector,
-     * with its ghost values.
+     * Solution (finest level, rotated basis, dimensionless) -> Cartesian
+     * active vector in the scene's units (for get_mapping()), with its
+     * ghost values.
      */
-    LevelVector cartesian_active(const LevelVector &x_rotated) const;
+    LevelVector solution_in_scene_units(const LevelVector &x_rotated) const;
 
-    /** Total contact force: the integral of sigma n over Gamma_C. */
-    Tensor<1, dim> contact_force(const LevelVector &active_solution) const;
+    /** The mapping of the mesh onto the scene's coordinates. */
+    const Mapping<dim> &get_mapping() const { return mapping; }
 
-    /** Error norms against Data/Exact displacement and Exact stress. */
-    ErrorNorms errors(const LevelVector &active_solution) const;
+    /**
+     * Total contact force: the integral of sigma n over Gamma_C, of the
+     * solution_in_scene_units().
+     */
+    Tensor<1, dim> contact_force(const LevelVector &solution) const;
+
+    /**
+     * Error norms of the solution_in_scene_units() against Data/Exact
+     * displacement and Exact stress.
+     */
+    ErrorNorms errors(const LevelVector &solution) const;
+
+    /**
+     * The largest |u| and von Mises stress of the solution_in_scene_units()
+     * at the corners of the cells (where the Q1 and RT0 fields take their
+     * extremes in a cell); collective.
+     */
+    FieldMaxima field_maxima(const LevelVector &solution) const;
 
     /**
      * One row per contact vertex of the finest level, sorted by position
@@ -72,6 +99,8 @@ namespace FoslsContact
   private:
     const Discretization<dim> &     discretization;
     const Parameters::AllParameters parameters;
+    const Scaling                   scaling;
+    const PhysicalMapping<dim>      mapping;
   };
 } // namespace FoslsContact
 

@@ -6,6 +6,8 @@
 #include <deal.II/grid/tria.h>
 
 #include <fosls_contact/parameters.h>
+#include <fosls_contact/scene/scaled_function.h>
+#include <fosls_contact/scene/scaling.h>
 
 #include <map>
 #include <memory>
@@ -16,6 +18,12 @@ namespace FoslsContact
   /**
    * A scene: the geometry (coarse mesh with boundary ids) and the data
    * functions of one problem, read from the parameter file.
+   *
+   * The scene is given in the user's units; the scene hands the rest of
+   * the program its dimensionless form (Scaling, doc/method.md section 1):
+   * the coarse mesh in units of the reference length L, the data
+   * functions divided by their scales, the elastic constants divided by
+   * the reference stress S. Only the output converts back.
    *
    * The scene also decides which effects exist. A body force is simulated
    * only when the file gives one, and contact only when it names contact
@@ -30,11 +38,20 @@ namespace FoslsContact
     explicit Scene(const Parameters::AllParameters &parameters);
 
     /**
-     * Fill @p triangulation with the coarse mesh (level 1 of the paper,
-     * level 0 in deal.II) and check that its boundary ids are exactly the
-     * ones named in the parameter file.
+     * Fill @p triangulation with the dimensionless coarse mesh (level 1 of
+     * the paper, level 0 in deal.II: the scene's mesh divided by L) and
+     * check that its boundary ids are exactly the ones named in the
+     * parameter file.
      */
     void make_coarse_mesh(Triangulation<dim> &triangulation) const;
+
+    /** The reference length and stress of this scene. */
+    const Scaling &scaling() const { return reference; }
+    /**
+     * The dimensionless elastic constants: mu/S and lambda/S (E/S and nu
+     * as well).
+     */
+    const Parameters::Material &material() const { return dimensionless_material; }
 
     bool has_contact() const { return !contact_ids.empty(); }
     bool has_body_force() const { return body_force_function != nullptr; }
@@ -49,20 +66,26 @@ namespace FoslsContact
       return dirichlet_masks.at(id);
     }
 
-    const Function<dim> &body_force() const { return *body_force_function; }
-    const Function<dim> &dirichlet_values() const { return *dirichlet_function; }
-    const Function<dim> &traction() const { return *traction_function; }
-    const Function<dim> &gap() const { return *gap_function; }
-    /** The unit obstacle normal at @p p (the expression, normalized). */
+    /** @{ The data at dimensionless points, dimensionless. */
+    const Function<dim> &body_force() const { return *body_force_scaled; }
+    const Function<dim> &dirichlet_values() const { return *dirichlet_scaled; }
+    const Function<dim> &traction() const { return *traction_scaled; }
+    const Function<dim> &gap() const { return *gap_scaled; }
+    /** The unit obstacle normal at the dimensionless point @p p. */
     Tensor<1, dim> obstacle_normal(const Point<dim> &p) const;
-    const Function<dim> &exact_displacement() const { return *exact_u_function; }
-    /** Exact stress, dim*dim components, row by row; may be null. */
-    const Function<dim> *exact_stress() const { return exact_sigma_function.get(); }
     /** Initial displacement expression, or null. */
     const Function<dim> *initial_displacement() const
     {
-      return initial_u_function.get();
+      return initial_u_scaled.get();
     }
+    /** @} */
+
+    /** @{ The data in the scene's units, at points in the scene's units. */
+    const Function<dim> &body_force_in_scene_units() const { return *body_force_function; }
+    const Function<dim> &exact_displacement() const { return *exact_u_function; }
+    /** Exact stress, dim*dim components, row by row; may be null. */
+    const Function<dim> *exact_stress() const { return exact_sigma_function.get(); }
+    /** @} */
 
     /**
      * Refuse a mesh with a cell whose corner has a Jacobian determinant
@@ -79,8 +102,12 @@ namespace FoslsContact
     make_function(const std::string &expression,
                   const unsigned int n_components,
                   const std::string &name) const;
+    /** L: the parameter, or the largest side of the coarse mesh's box. */
+    double reference_length(const Parameters::AllParameters &parameters) const;
 
     const Parameters::Geometry geometry;
+    Scaling                    reference;
+    Parameters::Material       dimensionless_material;
     std::map<std::string, double> constants;
     std::set<types::boundary_id> dirichlet_ids, neumann_ids, contact_ids;
     std::map<unsigned int, std::vector<bool>> dirichlet_masks;
@@ -93,6 +120,9 @@ namespace FoslsContact
     std::unique_ptr<FunctionParser<dim>> exact_u_function;
     std::unique_ptr<FunctionParser<dim>> exact_sigma_function;
     std::unique_ptr<FunctionParser<dim>> initial_u_function;
+
+    std::unique_ptr<ScaledFunction<dim>> body_force_scaled, dirichlet_scaled,
+      traction_scaled, gap_scaled, initial_u_scaled;
   };
 } // namespace FoslsContact
 

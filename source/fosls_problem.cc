@@ -4,6 +4,8 @@
 
 #include <fosls_contact/assembly/fosls_assembler.h>
 #include <fosls_contact/fosls_problem.h>
+#include <fosls_contact/output/hertz_comparison.h>
+#include <fosls_contact/output/json.h>
 #include <fosls_contact/output/postprocessor.h>
 #include <fosls_contact/qp/definiteness_check.h>
 #include <fosls_contact/qp/gathered_qp.h>
@@ -18,15 +20,7 @@ namespace FoslsContact
 {
   namespace
   {
-    std::string
-    number(const double value)
-    {
-      if (!std::isfinite(value))
-        return "null";
-      std::ostringstream s;
-      s << std::setprecision(12) << value;
-      return s.str();
-    }
+    const auto number = json_number;
 
     const char *
     solver_name(const Parameters::Solver::Type type)
@@ -604,6 +598,21 @@ namespace FoslsContact
                       name + "\": " + number(seconds);
       summary["time_sections_s"] = sections + "}";
     }
+    if (parameters.hertz.shape != Parameters::HertzComparison::Shape::none &&
+        scene.has_contact())
+      {
+        // (the contact table is gathered on the first process)
+        const auto rows = post.contact_rows(solution);
+        Point<dim> contact_point;
+        for (unsigned int d = 0; d < dim; ++d)
+          contact_point[d] = parameters.hertz.contact_point[d] / scene.scaling().length;
+        HertzComparison<dim> hertz(parameters.hertz,
+                                   parameters.material,
+                                   scene.obstacle_normal(contact_point));
+        hertz.evaluate(force, rows);
+        summary["hertz"] = hertz.json();
+        pcout << hertz.report() << std::endl;
+      }
     if (scene.has_exact_solution())
       {
         const ErrorNorms e = post.errors(cartesian);

@@ -671,6 +671,52 @@ namespace FoslsContact
 
 
     void
+    HertzComparison::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Hertz comparison");
+      prm.declare_entry("Shape",
+                        "none",
+                        Patterns::Selection("none|cylinder|sphere"),
+                        "none, or the Hertz contact this scene is: cylinder (2D, "
+                        "plane strain: a cylinder of radius R on a plane, forces "
+                        "per unit length) or sphere (3D: a sphere of radius R on a "
+                        "plane). One of the two bodies is rigid, the other has the "
+                        "scene's material. The run prints Hertz's contact half-width "
+                        "(radius) a and peak pressure p0 for the computed force, "
+                        "against the computed contact edge, peak pressure and the "
+                        "relative l2 error of the pressure at the contact vertices, "
+                        "and writes them to summary.json (\"hertz\"), which "
+                        "scripts/plot.py draws.");
+      prm.declare_entry("Radius",
+                        "0",
+                        Patterns::Double(0),
+                        "R, in the scene's units.");
+      prm.declare_entry("Contact point",
+                        "0, 0",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "The first point of contact (the center of the contact zone), "
+                        "in the scene's coordinates; distances are measured from it "
+                        "in the plane of contact.");
+      prm.leave_subsection();
+    }
+
+    void
+    HertzComparison::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Hertz comparison");
+      const std::string s = prm.get("Shape");
+      shape         = s == "none" ? Shape::none : s == "cylinder" ? Shape::cylinder : Shape::sphere;
+      radius        = prm.get_double("Radius");
+      contact_point = parse_double_list(prm.get("Contact point"));
+      prm.leave_subsection();
+      if (shape == Shape::none)
+        return;
+      AssertThrow(radius > 0,
+                  ExcMessage("parameter 'Hertz comparison/Radius' must be > 0 with a Shape"));
+    }
+
+
+    void
     AllParameters::declare_parameters(ParameterHandler &prm)
     {
       Geometry::declare_parameters(prm);
@@ -681,6 +727,7 @@ namespace FoslsContact
       BoundaryConditions::declare_parameters(prm);
       Solver::declare_parameters(prm);
       Output::declare_parameters(prm);
+      HertzComparison::declare_parameters(prm);
     }
 
     void
@@ -704,6 +751,20 @@ namespace FoslsContact
       boundary_conditions.parse_parameters(prm);
       solver.parse_parameters(prm);
       output.parse_parameters(prm);
+      hertz.parse_parameters(prm);
+      if (hertz.shape != HertzComparison::Shape::none)
+        {
+          AssertThrow((hertz.shape == HertzComparison::Shape::cylinder) ==
+                        (geometry.dimension == 2),
+                      ExcMessage("parameter 'Hertz comparison/Shape' = " +
+                                 std::string(geometry.dimension == 2 ? "sphere needs "
+                                                                       "Dimension = 3" :
+                                                                       "cylinder needs "
+                                                                       "Dimension = 2")));
+          AssertThrow(hertz.contact_point.size() == geometry.dimension,
+                      ExcMessage("parameter 'Hertz comparison/Contact point' needs " +
+                                 std::to_string(geometry.dimension) + " entries"));
+        }
 
       // 'all', a component list for every Dirichlet id, or per id
       // "id: components; id: components" (ids not named: all)

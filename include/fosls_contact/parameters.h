@@ -213,6 +213,29 @@ namespace FoslsContact
       void        parse_parameters(ParameterHandler &prm);
     };
 
+    /**
+     * subsection Hertz comparison: a scene that is a Hertz contact (a
+     * cylinder, per unit length in 2D, or a sphere, in 3D, of radius R
+     * against a plane, one of them rigid) declares it here, and the run
+     * compares its contact pressure with Hertz's (HertzComparison).
+     */
+    struct HertzComparison
+    {
+      enum class Shape
+      {
+        none,
+        cylinder,
+        sphere,
+      };
+      Shape               shape  = Shape::none;
+      double              radius = 0;
+      /** The first point of contact, where Hertz's pressure peaks. */
+      std::vector<double> contact_point;
+
+      static void declare_parameters(ParameterHandler &prm);
+      void        parse_parameters(ParameterHandler &prm);
+    };
+
     /** All subsections together. */
     struct AllParameters
     {
@@ -224,6 +247,7 @@ namespace FoslsContact
       BoundaryConditions boundary_conditions;
       Solver             solver;
       Output             output;
+      HertzComparison    hertz;
 
       static void declare_parameters(ParameterHandler &prm);
       void        parse_parameters(ParameterHandler &prm);

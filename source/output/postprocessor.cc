@@ -252,8 +252,8 @@ namespace FoslsContact
 
 
   template <int dim>
-  std::string
-  Postprocessor<dim>::contact_table(const LevelVector &x) const
+  std::vector<std::array<double, dim + 4>>
+  Postprocessor<dim>::contact_rows(const LevelVector &x) const
   {
     const auto &level = discretization.level(discretization.finest_level());
     update_ghosts(x);
@@ -296,15 +296,24 @@ namespace FoslsContact
           rows.push_back(row);
         }
     const auto all = Utilities::MPI::gather(discretization.get_communicator(), rows, 0);
-    std::ostringstream out;
-    if (Utilities::MPI::this_mpi_process(discretization.get_communicator()) != 0)
-      return out.str();
     rows.clear();
     for (const auto &part : all)
       rows.insert(rows.end(), part.begin(), part.end());
     std::sort(rows.begin(), rows.end(), [](const auto &a, const auto &b) {
       return std::lexicographical_compare(a.begin(), a.begin() + dim, b.begin(), b.begin() + dim);
     });
+    return rows;
+  }
+
+
+  template <int dim>
+  std::string
+  Postprocessor<dim>::contact_table(const LevelVector &x) const
+  {
+    const auto         rows = contact_rows(x);
+    std::ostringstream out;
+    if (Utilities::MPI::this_mpi_process(discretization.get_communicator()) != 0)
+      return out.str();
     out << (dim == 2 ? "x,y" : "x,y,z") << ",u_n,gap,sigma_nn,active\n";
     out << std::setprecision(10);
     for (const auto &row : rows)

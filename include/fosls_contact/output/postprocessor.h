@@ -81,9 +81,14 @@ namespace FoslsContact
     FieldMaxima field_maxima(const LevelVector &solution) const;
 
     /**
-     * One row per contact vertex of the finest level, sorted by position
-     * (on the first process; collective).
+     * One row per contact vertex of the finest level, sorted by position,
+     * in the scene's units: the position, u_n, the gap, sigma_nn (the
+     * mean over the contact faces at the vertex) and 1 if the vertex is
+     * in contact (u_n = g), else 0. On the first process; collective.
      */
+    std::vector<std::array<double, dim + 4>> contact_rows(const LevelVector &x_rotated) const;
+
+    /** contact_rows() as CSV text (on the first process; collective). */
     std::string contact_table(const LevelVector &x_rotated) const;
 
     /**

@@ -1,0 +1,74 @@
+#ifndef fosls_contact_output_hertz_comparison_h
+#define fosls_contact_output_hertz_comparison_h
+
+#include <deal.II/base/tensor.h>
+
+#include <fosls_contact/parameters.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace FoslsContact
+{
+  using namespace dealii;
+
+  /**
+   * Hertz's solution for the scene's contact (Parameters::HertzComparison)
+   * with the computed force, against the computed contact pressure.
+   *
+   * One body is rigid, the other elastic with E and nu, so the contact
+   * modulus is E* = E / (1 - nu^2). With F the normal component of the
+   * computed contact force (per unit length for a cylinder):
+   *   cylinder: a = sqrt(4 F R / (pi E*)),  p0 = 2 F / (pi a),
+   *   sphere:   a = (3 F R / (4 E*))^(1/3), p0 = 3 F / (2 pi a^2),
+   * and p(r) = p0 sqrt(1 - r^2 / a^2) for r < a, with r the distance from
+   * the contact point in the plane of contact (orthogonal to the obstacle
+   * normal there). Hertz assumes a half-space and a contact small against
+   * R; the scenes are bodies of finite size, so expect agreement to a few
+   * percent, improving with the mesh.
+   */
+  template <int dim>
+  class HertzComparison
+  {
+  public:
+    /**
+     * @p normal: the unit obstacle normal at the contact point; the
+     * material's E and nu are in the scene's units.
+     */
+    HertzComparison(const Parameters::HertzComparison &hertz,
+                    const Parameters::Material &       material,
+                    const Tensor<1, dim> &             normal);
+
+    /**
+     * Compare with @p force and the contact table @p rows (Postprocessor::
+     * contact_rows(): position, u_n, gap, sigma_nn, active per contact
+     * vertex).
+     */
+    void evaluate(const Tensor<1, dim> &                           force,
+                  const std::vector<std::array<double, dim + 4>> &rows);
+
+    /** Hertz's pressure at distance @p r from the contact point. */
+    double pressure(const double r) const;
+
+    /** Two lines for the screen. */
+    std::string report() const;
+    /** The JSON object for summary.json. */
+    std::string json() const;
+
+  private:
+    /** The distance of @p p from the contact point, in the plane of contact. */
+    double distance(const Tensor<1, dim> &p) const;
+
+    const Parameters::HertzComparison hertz;
+    double                            contact_modulus; ///< E*
+    Tensor<1, dim>                    normal, center;
+
+    double force = 0, a = 0, p0 = 0;
+    /** Largest r of a vertex in contact, smallest r of one beyond it. */
+    double edge_inside = 0, edge_outside = 0;
+    double peak = 0, peak_r = 0, pressure_error = 0;
+  };
+} // namespace FoslsContact
+
+#endif

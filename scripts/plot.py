@@ -1,0 +1,162 @@
+#!/usr/bin/env python3
+"""Plot a fosls-contact run: the contact pressure and the convergence history.
+
+    scripts/plot.py RUN_DIR [-o OUT_DIR]
+
+RUN_DIR is a run's Output/Directory (it holds contact.csv, convergence.csv
+and summary.json). Writes, into OUT_DIR (default RUN_DIR):
+
+  contact_pressure.png  -sigma_nn at the contact vertices, in the scene's
+                        units, against x in 2D and against the distance
+                        from the contact point in 3D; with Hertz's pressure
+                        where the scene declares a Hertz comparison
+                        (summary.json "hertz"), and the vertices in contact
+                        marked.
+  convergence.png       J and the energy norm of the correction per
+                        iteration (convergence.csv).
+
+Exit code 0, or 1 with one line on stderr if the run directory is missing
+or incomplete.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import sys
+
+
+def fail(message):
+    sys.stderr.write("plot.py: error: %s\n" % message)
+    sys.exit(1)
+
+
+def read_run(directory):
+    try:
+        with open(os.path.join(directory, "summary.json")) as f:
+            summary = json.load(f)
+        with open(os.path.join(directory, "convergence.csv")) as f:
+            history = list(csv.DictReader(f))
+        with open(os.path.join(directory, "contact.csv")) as f:
+            contact = list(csv.DictReader(f))
+    except (OSError, ValueError) as e:
+        fail("cannot read the run in '%s': %s" % (directory, e))
+    return summary, history, contact
+
+
+def hertz_pressure(hertz, r):
+    a, p0 = hertz["a"], hertz["p0"]
+    return p0 * math.sqrt(1. - (r / a) ** 2) if a and abs(r) < a else 0.
+
+
+def distance_in_plane(row, hertz, dim):
+    """Distance of a contact vertex from Hertz's contact point, in the plane
+    orthogonal to the obstacle normal."""
+    p = [float(row["xyz"[d]]) - hertz["contact_point"][d] for d in range(dim)]
+    n = hertz["normal"]
+    pn = sum(p[d] * n[d] for d in range(dim))
+    return math.sqrt(sum((p[d] - pn * n[d]) ** 2 for d in range(dim)))
+
+
+def plot_pressure(plt, summary, contact, out):
+    dim = int(summary["dimension"])
+    hertz = summary.get("hertz")
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    if not contact:
+        ax.text(0.5, 0.5, "no contact boundary", ha="center", transform=ax.transAxes)
+    else:
+        if dim == 2:
+            # signed position along the contact, measured from Hertz's point
+            origin = hertz["contact_point"][0] if hertz else 0.
+            coordinate = [float(r["x"]) - origin for r in contact]
+            label = "x" if not hertz else "x - x_contact"
+        else:
+            if hertz:
+                coordinate = [distance_in_plane(r, hertz, dim) for r in contact]
+            else:
+                centre = [sum(float(r["xyz"[d]]) for r in contact) / len(contact)
+                          for d in range(dim)]
+                coordinate = [math.sqrt(sum((float(r["xyz"[d]]) - centre[d]) ** 2
+                                            for d in range(dim))) for r in contact]
+            label = "distance from the contact point"
+        pressure = [-float(r["sigma_nn"]) for r in contact]
+        active = [r["active"].strip() == "1" for r in contact]
+        order = sorted(range(len(contact)), key=lambda i: coordinate[i])
+        if dim == 2:
+            ax.plot([coordinate[i] for i in order], [pressure[i] for i in order],
+                    "-", color="tab:blue", lw=1, label="computed -sigma_nn")
+        else:
+            ax.plot(coordinate, pressure, ".", color="tab:blue", ms=3,
+                    label="computed -sigma_nn")
+        ax.plot([c for c, a in zip(coordinate, active) if a],
+                [p for p, a in zip(pressure, active) if a], "o", mfc="none",
+                color="tab:blue", ms=5, label="in contact (u_n = g)")
+        if hertz:
+            a = hertz["a"]
+            span = 2.5 * a if a else max(coordinate)
+            lo = -span if dim == 2 else 0.
+            xs = [lo + (span - lo) * k / 800. for k in range(801)]
+            ax.plot(xs, [hertz_pressure(hertz, x) for x in xs], "--", color="tab:red",
+                    label="Hertz (a = %.4g, p0 = %.4g)" % (a, hertz["p0"]))
+            ax.set_xlim(lo, span)
+            ax.set_title("contact pressure; Hertz's peak %.4g, computed %.4g, "
+                         "l2 error %.3g" % (hertz["p0"], hertz["peak"],
+                                            hertz["pressure_error"]), fontsize=9)
+        ax.set_xlabel(label)
+        ax.set_ylabel("contact pressure -sigma_nn")
+        ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "contact_pressure.png"), dpi=120)
+    plt.close(fig)
+
+
+def plot_convergence(plt, summary, history, out):
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    iterations = [int(r["iteration"]) for r in history]
+    J = [float(r["functional"]) for r in history]
+    correction = [float(r["correction"]) for r in history]
+    ax.semilogy(iterations, [max(j, 1e-300) for j in J], "o-", label="J")
+    ax.semilogy(iterations[1:], [max(c, 1e-300) for c in correction[1:]], "s-",
+                label="|x_k - x_{k-1}|_A")
+    ax.set_xlabel("iteration")
+    ax.set_title("%s: %d iterations, %s" % (
+        summary.get("solver", "solver"), int(summary.get("iterations", 0)),
+        "converged" if summary.get("converged") else "NOT converged"), fontsize=9)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "convergence.png"), dpi=120)
+    plt.close(fig)
+
+
+def main():
+    parser = argparse.ArgumentParser(description="Plot a fosls-contact run.")
+    parser.add_argument("run_dir", help="the run's Output/Directory")
+    parser.add_argument("-o", "--out", help="where to write the PNG files "
+                        "(default: the run directory)")
+    args = parser.parse_args()
+    if not os.path.isdir(args.run_dir):
+        fail("'%s' is not a directory" % args.run_dir)
+    summary, history, contact = read_run(args.run_dir)
+    out = args.out or args.run_dir
+    os.makedirs(out, exist_ok=True)
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        # another python3 first on PATH (a virtual environment, pyenv):
+        # the system's, where apt installs python3-matplotlib, has it
+        system = "/usr/bin/python3"
+        if os.path.exists(system) and os.path.realpath(sys.executable) != system:
+            os.execv(system, [system] + sys.argv)
+        fail("matplotlib is missing (scripts/setup.sh installs python3-matplotlib)")
+    plot_pressure(plt, summary, contact, out)
+    plot_convergence(plt, summary, history, out)
+    print("wrote %s and %s" % (os.path.join(out, "contact_pressure.png"),
+                               os.path.join(out, "convergence.png")))
+
+
+if __name__ == "__main__":
+    main()

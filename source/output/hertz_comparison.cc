@@ -1,0 +1,137 @@
+#include <deal.II/base/numbers.h>
+
+#include <fosls_contact/output/hertz_comparison.h>
+#include <fosls_contact/output/json.h>
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace FoslsContact
+{
+  template <int dim>
+  HertzComparison<dim>::HertzComparison(const Parameters::HertzComparison &hertz,
+                                        const Parameters::Material &       material,
+                                        const Tensor<1, dim> &             normal)
+    : hertz(hertz)
+    , contact_modulus(material.youngs_modulus /
+                      (1. - material.poisson_ratio * material.poisson_ratio))
+    , normal(normal)
+  {
+    for (unsigned int d = 0; d < dim; ++d)
+      center[d] = hertz.contact_point[d];
+  }
+
+
+  template <int dim>
+  double
+  HertzComparison<dim>::distance(const Tensor<1, dim> &p) const
+  {
+    const Tensor<1, dim> d = p - center;
+    return (d - (d * normal) * normal).norm();
+  }
+
+
+  template <int dim>
+  double
+  HertzComparison<dim>::pressure(const double r) const
+  {
+    return r < a ? p0 * std::sqrt(1. - r * r / (a * a)) : 0.;
+  }
+
+
+  template <int dim>
+  void
+  HertzComparison<dim>::evaluate(const Tensor<1, dim> &                           total_force,
+                                 const std::vector<std::array<double, dim + 4>> &rows)
+  {
+    const double R = hertz.radius, pi = numbers::PI;
+    force          = std::abs(total_force * normal);
+    if (hertz.shape == Parameters::HertzComparison::Shape::cylinder)
+      {
+        a  = std::sqrt(4. * force * R / (pi * contact_modulus));
+        p0 = a > 0 ? 2. * force / (pi * a) : 0.;
+      }
+    else
+      {
+        a  = std::cbrt(3. * force * R / (4. * contact_modulus));
+        p0 = a > 0 ? 3. * force / (2. * pi * a * a) : 0.;
+      }
+    edge_inside  = 0;
+    edge_outside = std::numeric_limits<double>::infinity();
+    peak = peak_r = 0;
+    double difference = 0, norm = 0;
+    for (const auto &row : rows)
+      {
+        Tensor<1, dim> p;
+        for (unsigned int d = 0; d < dim; ++d)
+          p[d] = row[d];
+        const double r = distance(p), p_h = -row[dim + 2];
+        if (row[dim + 3] == 1)
+          edge_inside = std::max(edge_inside, r);
+        if (p_h > peak)
+          {
+            peak   = p_h;
+            peak_r = r;
+          }
+        difference += (p_h - pressure(r)) * (p_h - pressure(r));
+        norm += pressure(r) * pressure(r);
+      }
+    for (const auto &row : rows)
+      {
+        Tensor<1, dim> p;
+        for (unsigned int d = 0; d < dim; ++d)
+          p[d] = row[d];
+        if (row[dim + 3] == 0 && distance(p) > edge_inside)
+          edge_outside = std::min(edge_outside, distance(p));
+      }
+    pressure_error = norm > 0 ? std::sqrt(difference / norm) : 0.;
+    // (a peak on the contact point itself, up to round-off)
+    if (peak_r < 1e-12 * R)
+      peak_r = 0;
+  }
+
+
+  template <int dim>
+  std::string
+  HertzComparison<dim>::report() const
+  {
+    std::ostringstream out;
+    out << std::setprecision(4) << "Hertz ("
+        << (dim == 2 ? "cylinder, per unit length" : "sphere") << ", R = " << hertz.radius
+        << ", E* = " << contact_modulus << "): F = " << force << ", a = " << a
+        << ", p0 = " << p0 << "\n"
+        << "       computed: contact edge between " << edge_inside << " and "
+        << edge_outside << ", peak pressure " << peak << " at r = " << peak_r
+        << ", pressure error " << std::setprecision(3) << pressure_error
+        << " (relative l2 at the contact vertices)";
+    return out.str();
+  }
+
+
+  template <int dim>
+  std::string
+  HertzComparison<dim>::json() const
+  {
+    const auto number = json_number;
+    std::ostringstream out;
+    out << "{\"shape\": \"" << (dim == 2 ? "cylinder" : "sphere")
+        << "\", \"radius\": " << number(hertz.radius) << ", \"contact_point\": [";
+    for (unsigned int d = 0; d < dim; ++d)
+      out << (d ? ", " : "") << number(center[d]);
+    out << "], \"normal\": [";
+    for (unsigned int d = 0; d < dim; ++d)
+      out << (d ? ", " : "") << number(normal[d]);
+    out << "], \"contact_modulus\": " << number(contact_modulus)
+        << ", \"force\": " << number(force) << ", \"a\": " << number(a)
+        << ", \"p0\": " << number(p0) << ", \"edge_inside\": " << number(edge_inside)
+        << ", \"edge_outside\": " << number(edge_outside) << ", \"peak\": " << number(peak)
+        << ", \"peak_r\": " << number(peak_r) << ", \"pressure_error\": " << number(pressure_error)
+        << "}";
+    return out.str();
+  }
+
+  template class HertzComparison<2>;
+  template class HertzComparison<3>;
+} // namespace FoslsContact

@@ -35,13 +35,14 @@ int
 main(int argc, char *argv[])
 {
   using namespace FoslsContact;
-  // a closed stdout (`fosls-contact scene.prm | head -1`) must not kill the
-  // run before its files are written: writes to it then fail quietly
-  std::signal(SIGPIPE, SIG_IGN);
   // threads: as many as cores (or DEAL_II_NUM_THREADS) until the scene's
   // Solver/Threads says otherwise
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv,
                                                dealii::numbers::invalid_unsigned_int);
+  // a closed stdout (`fosls-contact scene.prm | head -1`) must not kill the
+  // run before its files are written: writes to it then fail quietly (after
+  // MPI_Init, which may install its own handler)
+  std::signal(SIGPIPE, SIG_IGN);
   dealii::deal_II_exceptions::disable_abort_on_exception();
   dealii::deal_II_exceptions::suppress_stacktrace_in_exceptions();
 

@@ -282,12 +282,13 @@ namespace FoslsContact
   void
   ParameterReader::read_file(const std::string &file)
   {
+    const std::string text = read_text(file, "parameter file", "command line");
     const std::string type = extension(file);
     if (type == "json")
-      read_json(file);
+      read_json(file, text);
     else if (type == "xml")
       {
-        std::istringstream in(read_text(file, "parameter file", "command line"));
+        std::istringstream in(text);
         try
           {
             prm.parse_input_from_xml(in);
@@ -299,14 +300,13 @@ namespace FoslsContact
       }
     else if (type == "prm")
       {
-        const std::string text = read_text(file, "parameter file", "command line");
-        n_includes             = 0;
+        n_includes = 0;
         read_prm(file, std::filesystem::weakly_canonical(file).string(), text);
       }
     else
       throw InputError("command line",
-                  "parameter file '" + ErrorLine::quote(file) +
-                    "' has neither of the extensions .prm, .json, .xml");
+                       "parameter file '" + ErrorLine::quote(file) +
+                         "' has neither of the extensions .prm, .json, .xml");
   }
 
 
@@ -426,9 +426,9 @@ namespace FoslsContact
 
 
   void
-  ParameterReader::read_json(const std::string &file)
+  ParameterReader::read_json(const std::string &file, const std::string &text)
   {
-    std::istringstream in(read_text(file, "parameter file", "command line"));
+    std::istringstream in(text);
     ptree              tree;
     try
       {

@@ -201,6 +201,16 @@ namespace FoslsContact
           fail("exists and is not a directory");
         if (::access(directory.c_str(), R_OK | W_OK | X_OK) != 0)
           fail("cannot be read and written: " + system_error(errno));
+        // the run replaces the directory: only one it wrote (its list is
+        // there), or one that holds nothing but output files (an earlier
+        // version's), never someone's other directory (/tmp, a home)
+        if (!present(directory / manifest_name))
+          for (const auto &entry : list(directory))
+            if (!is_output_name(entry) && entry.rfind(".staging-", 0) != 0)
+              fail("exists and holds '" + ErrorLine::quote(entry) +
+                   "', which fosls-contact did not write (the directory has no " +
+                   manifest_name + "); name a new or empty directory, or one "
+                   "fosls-contact wrote");
       }
 
     // the lock: a second run into the directory fails here, at once. The
@@ -273,7 +283,16 @@ namespace FoslsContact
       if (!out)
         fail(system_error(errno));
       errno = 0;
-      writer(out);
+      try
+        {
+          writer(out);
+        }
+      catch (const std::exception &e)
+        {
+          // (deal.II's writers throw on a failed stream: the cause is errno's)
+          const int error = errno;
+          fail(error ? system_error(error) : ErrorLine::text(e));
+        }
       out.flush();
       if (!out)
         fail(errno ? system_error(errno) : "write error");
@@ -349,6 +368,10 @@ namespace FoslsContact
             ::linkat(AT_FDCWD, (directory / name).c_str(), AT_FDCWD, (staging / name).c_str(), 0) != 0)
           to_move.push_back(name);
       }
+    // the new directory keeps the old one's permissions
+    struct stat old_status;
+    if (has_old && ::stat(directory.c_str(), &old_status) == 0)
+      ::chmod(staging.c_str(), old_status.st_mode & 07777);
     std::string error = sync(staging);
     if (!error.empty())
       fail("cannot sync " + quoted(staging) + ": " + error);

@@ -101,9 +101,17 @@ class Run:
         return self.summary.get(key)
 
     def ok(self):
-        """Exit code 0, nothing on stderr, summary.json written."""
-        return (self.returncode == 0 and self.stderr == ""
-                and bool(self.summary))
+        """The run ended normally with its output written: exit code 0
+        and nothing on stderr, or, when the solver did not converge
+        (summary.json "converged": false), exit code 2 and the one line on
+        stderr that says so."""
+        if not self.summary:
+            return False
+        if self.summary.get("converged") is False:
+            lines = self.stderr.splitlines()
+            return (self.returncode == 2 and len(lines) == 1
+                    and "not converged" in lines[0])
+        return self.returncode == 0 and self.stderr == ""
 
     @property
     def force(self):
@@ -161,7 +169,8 @@ class Runner:
                    "--set", "Output/Directory=" + directory,
                    "--set", "Output/Write vtu=false"]
         if processes > 1:
-            command = [os.environ.get("MPIRUN", "mpirun"), "--oversubscribe",
+            # (--quiet: no report of mpirun's own on a non-zero exit code)
+            command = [os.environ.get("MPIRUN", "mpirun"), "--quiet", "--oversubscribe",
                        "-np", str(processes)] + command
         for s in settings:
             command += ["--set", s]
@@ -294,3 +303,35 @@ def check_plain_cycle(runner, label, prm, scene):
                               reference["contact_force"]) <= 1e-6,
           label + ": |F - F_ref| / |F_ref| <= 1e-6")
     return run
+
+
+def execute(command, env=None, timeout=300, stdout=subprocess.PIPE):
+    """Run @p command (a list) with the extra environment variables @p env;
+    return (exit code, stdout text, stderr text). A run that takes longer
+    than @p timeout seconds is killed (exit code None)."""
+    environment = dict(os.environ)
+    environment.update(env or {})
+    try:
+        p = subprocess.run(command, env=environment, stdout=stdout,
+                           stderr=subprocess.PIPE, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return None, "", ""
+    decode = lambda b: b.decode("utf-8", "backslashreplace") if b else ""
+    return p.returncode, decode(p.stdout), decode(p.stderr)
+
+
+def one_error_line(stderr, *parts):
+    """stderr is exactly one line, 'fosls-contact: error in ...', and
+    contains every string of @p parts."""
+    lines = stderr.splitlines()
+    return (len(lines) == 1 and lines[0].startswith("fosls-contact: error in ")
+            and all(p in lines[0] for p in parts))
+
+
+def leftovers(directory):
+    """What a run may leave beside @p directory: its staging directories and
+    its lock file."""
+    parent = os.path.dirname(os.path.abspath(directory)) or "."
+    name = os.path.basename(os.path.abspath(directory))
+    return sorted(n for n in os.listdir(parent)
+                  if n.startswith("." + name + ".staging") or n == "." + name + ".lock")

@@ -64,7 +64,7 @@ namespace FoslsContact
                   const std::string &canonical,
                   const std::string &text);
     void include(const std::string &name, const std::string &from, const std::string &where);
-    void read_json(const std::string &file);
+    void read_json(const std::string &file, const std::string &text);
 
     /**
      * Set the parameter @p name of the section @p sections to @p value,

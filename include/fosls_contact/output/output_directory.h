@@ -32,7 +32,10 @@ namespace FoslsContact
    * those of them it does not write again, and carries every other file
    * and directory over into the new directory (files as hard links before
    * the swap, directories moved after it). A file with the name of an
-   * output file is replaced.
+   * output file is replaced. As the directory is replaced, it must be one
+   * the program wrote (with that list), or new, or hold nothing but output
+   * files: the swap never takes someone's other directory (/tmp, a home
+   * directory, the current directory).
    *
    * Every error is thrown on every process with the same one-line text,
    * naming Output/Directory; the destructor removes the staging

@@ -8,11 +8,10 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from fosls_runs import check, execute, finish
+from fosls_runs import check, command_line, execute, finish
 
 exe, source = sys.argv[1], sys.argv[2]
 scene = os.path.join(source, "tests/scenes/square.prm")
-mpirun = os.environ.get("MPIRUN", "mpirun")
 files = ["contact.csv", "convergence.csv", "solution_0000.pvtu", "summary.json",
          "used_parameters.prm"]
 
@@ -22,13 +21,9 @@ for label, processes, settings in [
          ["Solver/Type=monotone multigrid", "Solver/Max iterations=1"]),
         ("converged", 1, [])]:
     directory = "out_%d_%d" % (processes, len(settings))
-    command = [exe, scene, "--set", "Output/Directory=" + directory,
-               "--set", "Geometry/Levels=4", "--set", "Output/Verbose=false"]
-    for s in settings:
-        command += ["--set", s]
-    if processes > 1:
-        command = [mpirun, "--quiet", "--oversubscribe", "-np", str(processes)] + command
-    rc, out, err = execute(command)
+    rc, out, err = execute(command_line(
+        exe, scene, ["Output/Directory=" + directory, "Geometry/Levels=4",
+                     "Output/Verbose=false"] + settings, processes))
     with open(os.path.join(directory, "summary.json")) as f:
         converged = json.load(f)["converged"]
     print("--- %s: exit code %s, converged %s" % (label, rc, json.dumps(converged)))

@@ -165,15 +165,9 @@ class Runner:
         the output goes to ./run_NN_<name>, without vtu files."""
         self.count += 1
         directory = "run_%02d" % self.count + ("_" + name if name else "")
-        command = [self.exe, os.path.join(self.source, prm),
-                   "--set", "Output/Directory=" + directory,
-                   "--set", "Output/Write vtu=false"]
-        if processes > 1:
-            # (--quiet: no report of mpirun's own on a non-zero exit code)
-            command = [os.environ.get("MPIRUN", "mpirun"), "--quiet", "--oversubscribe",
-                       "-np", str(processes)] + command
-        for s in settings:
-            command += ["--set", s]
+        command = command_line(self.exe, os.path.join(self.source, prm),
+                               ["Output/Directory=" + directory,
+                                "Output/Write vtu=false"] + list(settings), processes)
         with open(directory + ".cmd", "w") as f:
             f.write(" ".join("'%s'" % c if " " in c or ";" in c else c
                              for c in command) + "\n")
@@ -303,6 +297,19 @@ def check_plain_cycle(runner, label, prm, scene):
                               reference["contact_force"]) <= 1e-6,
           label + ": |F - F_ref| / |F_ref| <= 1e-6")
     return run
+
+
+def command_line(exe, prm, settings=(), processes=1):
+    """The command that runs @p exe on @p prm with the "Section/Name=value"
+    strings @p settings, on @p processes MPI processes (mpirun from
+    $MPIRUN, --quiet: no report of its own on a non-zero exit code)."""
+    command = [exe, prm]
+    for s in settings:
+        command += ["--set", s]
+    if processes > 1:
+        command = [os.environ.get("MPIRUN", "mpirun"), "--quiet", "--oversubscribe",
+                   "-np", str(processes)] + command
+    return command
 
 
 def execute(command, env=None, timeout=300, stdout=subprocess.PIPE):

@@ -12,12 +12,11 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from fosls_runs import check, execute, finish, leftovers, one_error_line
+from fosls_runs import check, command_line, execute, finish, leftovers, one_error_line
 
 exe, source = sys.argv[1], sys.argv[2]
 scene = os.path.join(source, "tests/scenes/square.prm")
 directory = "out"
-mpirun = os.environ.get("MPIRUN", "mpirun")
 user = {"solution_0001.vtu": "a", "solution_abc.vtu": "b", "solution_0000.2.vtu": "c",
         "notes.txt": "d", "plots/p.txt": "e"}
 
@@ -58,13 +57,9 @@ first = True
 for label, processes, extra in [("1 process", 1, []), ("2 processes", 2, []),
                                 ("1 process", 1, []),
                                 ("Write vtu = false", 1, ["Output/Write vtu=false"])]:
-    command = [exe, scene, "--set", "Output/Directory=" + directory,
-               "--set", "Geometry/Levels=2", "--set", "Output/Verbose=false"]
-    for s in extra:
-        command += ["--set", s]
-    if processes > 1:
-        command = [mpirun, "--quiet", "--oversubscribe", "-np", str(processes)] + command
-    rc, out, err = execute(command)
+    rc, out, err = execute(command_line(
+        exe, scene, ["Output/Directory=" + directory, "Geometry/Levels=2",
+                     "Output/Verbose=false"] + extra, processes))
     if first:
         add_user_files()
         first = False

@@ -5,7 +5,9 @@ usage: fuzz.py FOSLS_CONTACT SOURCE_DIR [--cases N] [--seed S] [--jobs J]
 
 Generates N cases (default 600) with a fixed seed (default 1) from the
 scenes in tests/scenes (Geometry/Levels = 2, at most 20 iterations, one
-thread): random and malformed values of every parameter (huge numbers,
+thread): random valid values (which reach the solver: weights, solver
+choices, data expressions, ...), random and malformed values of every
+parameter (huge numbers,
 NaN/inf, empty, control characters, bounds +-1), random expressions and
 constants, malformed --set arguments and options, scene files mutated
 (truncated, lines dropped, doubled or swapped, garbage bytes, unbalanced
@@ -115,6 +117,40 @@ def value_for(rng, name, pattern):
     return "".join(rng.choice(TOKENS) for _ in range(rng.randint(1, 8)))
 
 
+def valid_value_for(rng, name, pattern, dim):
+    """A random value that the pattern accepts (the run may still refuse it:
+    an indefinite functional, a NaN iterate, no convergence, ...)."""
+    if pattern.startswith("[Selection"):
+        return rng.choice(pattern[11:-2].split("|"))
+    if pattern == "[Bool]":
+        return rng.choice(["true", "false"])
+    if pattern.startswith("[Integer"):
+        bounds = re.findall(r"-?\d+", pattern)
+        low = int(bounds[0]) if bounds else 0
+        high = min(int(bounds[1]) if len(bounds) > 1 else 10, SAFE_MAX.get(name, 1000))
+        return str(rng.randint(low, max(low, high)))
+    if pattern.startswith("[Double"):
+        bounds = re.findall(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?", pattern)
+        low = float(bounds[0]) if bounds else -1e300
+        high = float(bounds[1]) if len(bounds) > 1 and "MAX" not in pattern.split("...")[1] \
+            else 1e300
+        candidates = [v for v in [0, 1e-12, 1e-8, 0.1, 0.5, 1, 2, 10, 1e3, 1e10, 1e300, -1, -1e10]
+                      if low <= v <= high]
+        return repr(rng.choice(candidates or [low]))
+    if name == "lambda":
+        return rng.choice(["0", "1", "1e10", "inf", "1e300"])
+    if name == "Constants":
+        return rng.choice(["a=1", "a=1,b=2", "k=1e10", "k=0", ""])
+    if name.endswith("ids") or name == "Dirichlet components":
+        return rng.choice(["", "0", "1", "2", "0, 1", "0, 1, 2, 3", "7", "all", "0: 0"])
+    if name.startswith("Directory"):
+        return rng.choice(["out", "out/sub", "o2"])
+    n = {"Exact stress": dim * dim, "Gap": 1}.get(name, dim)
+    pieces = ["0", "x", "y", "-0.01", "sin(pi*x)", "1e10*x", "x*y", "exp(x)", "1e-300",
+              "1/(1+x*x)", "if(x<0.5,0,-0.01)"]
+    return "; ".join(rng.choice(pieces) for _ in range(n))
+
+
 def mutate_scene(rng, text):
     lines = text.split("\n")
     kind = rng.randrange(7)
@@ -147,11 +183,19 @@ def make_case(rng, number, source, entries):
                       "--set", "Solver/Threads=1", "--set", "Output/Directory=out",
                       "--set", "Output/Verbose=false"]
     files = {}
-    kind = rng.choice(["value", "value", "value", "expression", "set", "option", "file",
-                       "file", "garbage", "json", "include"])
+    kind = rng.choice(["valid", "valid", "valid", "valid", "value", "value", "expression",
+                       "set", "option", "file", "file", "garbage", "json", "include"])
     arguments = ["scene.prm"] + base_arguments
     files["scene.prm"] = base.encode()
-    if kind == "value":
+    if kind == "valid":
+        dim = 3 if "cube3d" in scene_name else 2
+        for _ in range(rng.randint(1, 2)):
+            path, name, pattern = rng.choice(entries)
+            if name in ("Dimension", "Shape"):
+                continue
+            arguments += ["--set", "/".join(path + [name]) + "="
+                          + valid_value_for(rng, name, pattern, dim)]
+    elif kind == "value":
         for _ in range(rng.randint(1, 3)):
             path, name, pattern = rng.choice(entries)
             arguments += ["--set", "/".join(path + [name]) + "=" + value_for(rng, name, pattern)]

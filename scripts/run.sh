@@ -13,6 +13,19 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
+# deal.II reads DEAL_II_NUM_THREADS while the program loads, before main():
+# anything but a whole number > 0 aborts it there with a stack trace, which
+# the program cannot catch. Refuse it here, in one line. (Solver/Threads is
+# the way to choose the number of threads.)
+if [[ -v DEAL_II_NUM_THREADS ]] &&
+  ! [[ "$DEAL_II_NUM_THREADS" =~ ^0*[1-9][0-9]{0,5}$ ]]; then
+  shown="${DEAL_II_NUM_THREADS//[^[:print:]]/?}"
+  echo "fosls-contact: error in environment: DEAL_II_NUM_THREADS='${shown:0:40}'" \
+    "is not a whole number > 0 (deal.II would abort before the program starts);" \
+    "unset it and choose the threads with --set \"Solver/Threads=N\"" >&2
+  exit 1
+fi
+
 scene="prm/square.prm"
 if (($# > 0)) && [[ "$1" != -* ]]; then
   scene="$1"

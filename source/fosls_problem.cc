@@ -3,6 +3,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fosls_contact/assembly/fosls_assembler.h>
+#include <fosls_contact/build_info.h>
 #include <fosls_contact/fosls_problem.h>
 #include <fosls_contact/output/hertz_comparison.h>
 #include <fosls_contact/output/json.h>
@@ -475,7 +476,7 @@ namespace FoslsContact
 
   template <int dim>
   void
-  FoslsProblem<dim>::output_results()
+  FoslsProblem<dim>::output_results(OutputDirectory &output)
   {
     TimerOutput::Scope      t(timer, "Output");
     Postprocessor<dim>      post(*discretization, parameters);
@@ -564,6 +565,8 @@ namespace FoslsContact
             summary["coarse_defect_difference"] = number(difference);
           }
       }
+    summary["git_revision"]          = "\"" + BuildInfo::git_revision() + "\"";
+    summary["deal_ii_version"]       = "\"" + BuildInfo::deal_ii_version() + "\"";
     summary["time_setup_s"]          = number(time_setup);
     summary["time_solve_s"]          = number(time_solve);
     summary["peak_rss_mb"]           = number(Utilities::MPI::sum(peak_mb, comm));
@@ -642,25 +645,36 @@ namespace FoslsContact
           pcout << ' ' << std::setprecision(8) << force[d];
         pcout << std::defaultfloat << std::endl;
       }
-    post.write(solution, *monitor, summary, used_parameters);
+    post.write(solution, *monitor, summary, used_parameters, output);
     pcout << "Output written to " << parameters.output.directory << "/"
           << std::endl;
   }
 
 
   template <int dim>
-  void
+  bool
   FoslsProblem<dim>::run()
   {
-    setup();
-    assemble();
-    check_data();
-    check_rigid_motions();
-    check_definiteness();
-    make_initial_guess();
-    setup_solver();
-    solve();
-    output_results();
+    // an unusable output directory is found before the work, not after it
+    OutputDirectory output(parameters.output.directory, MPI_COMM_WORLD);
+    // one line as each phase ends, so that a long run shows where it is
+    const auto phase = [&](const char *name, const auto &work) {
+      Timer wall;
+      work();
+      pcout << name << " ... " << std::fixed << std::setprecision(2) << wall.wall_time()
+            << " s" << std::defaultfloat << std::endl;
+    };
+    phase("Setup: mesh, DoFs, levels", [&] { setup(); });
+    phase("Assembly", [&] { assemble(); });
+    phase("Checks: data, rigid motions, definiteness", [&] {
+      check_data();
+      check_rigid_motions();
+      check_definiteness();
+    });
+    phase("Initial guess", [&] { make_initial_guess(); });
+    phase("Setup: solver", [&] { setup_solver(); });
+    phase("Solve", [&] { solve(); });
+    phase("Output", [&] { output_results(output); });
     if (parameters.output.verbose)
       {
         timer.print_summary();
@@ -677,6 +691,7 @@ namespace FoslsContact
             pcout << std::endl;
           }
       }
+    return monitor->converged();
   }
 
   template class FoslsProblem<2>;

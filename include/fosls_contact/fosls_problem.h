@@ -7,6 +7,7 @@
 #include <fosls_contact/discretization/discretization.h>
 #include <fosls_contact/discretization/level_transfer.h>
 #include <fosls_contact/output/monitor.h>
+#include <fosls_contact/output/output_directory.h>
 #include <fosls_contact/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/scene/scene.h>
@@ -33,7 +34,12 @@ namespace FoslsContact
     FoslsProblem(const Parameters::AllParameters &parameters,
                  const std::string &              used_parameters);
 
-    void run();
+    /**
+     * Run the program: check and lock the output directory, then the data
+     * path; the output files are published when it ends. Returns whether
+     * the solver converged (the files are written either way).
+     */
+    bool run();
 
   private:
     void setup();
@@ -50,7 +56,7 @@ namespace FoslsContact
     void make_initial_guess();
     void setup_solver();
     void solve();
-    void output_results();
+    void output_results(OutputDirectory &output);
 
     /**
      * A solver for @p level_qp, the problem assembled on level @p level.

@@ -54,13 +54,6 @@ namespace FoslsContact
       const Scene<dim> &scene;
     };
 
-    void
-    write_file(const std::filesystem::path &path, const std::string &text)
-    {
-      std::ofstream out(path);
-      out << text;
-      AssertThrow(out.good(), ExcMessage("cannot write file " + path.string()));
-    }
   } // namespace
 
 
@@ -331,161 +324,147 @@ namespace FoslsContact
   Postprocessor<dim>::write(const LevelVector &                        x,
                             const Monitor &                            monitor,
                             const std::map<std::string, std::string> &summary,
-                            const std::string &used_parameters) const
+                            const std::string &                        used_parameters,
+                            OutputDirectory &                          output) const
   {
-    namespace fs = std::filesystem;
     const MPI_Comm     comm  = discretization.get_communicator();
-    const bool         first = Utilities::MPI::this_mpi_process(comm) == 0;
-    const fs::path     directory(parameters.output.directory);
-    // the first process makes the staging directory (its process id names
-    // it), the others write their pieces into it once it is there
-    const fs::path staging =
-      directory / (".staging-" +
-                   std::to_string(Utilities::MPI::broadcast(comm, int(::getpid()), 0)));
-    if (first)
+    const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
+    const std::string  table = contact_table(x); // (collective)
+    // every process writes its files into the staging directory; a
+    // failure (a full disk) is collected, so that every process reaches
+    // publish(), which then publishes nothing and stops all of them
+    std::string error;
+    try
       {
-        fs::create_directories(directory);
-        fs::remove_all(staging);
-        fs::create_directories(staging);
+        if (parameters.output.write_vtu)
+          write_vtu(x, output);
+        if (rank == 0)
+          {
+            output.write("contact.csv", [&](std::ostream &out) { out << table; });
+            output.write("convergence.csv", [&](std::ostream &out) { out << monitor.csv(); });
+            output.write("used_parameters.prm",
+                         [&](std::ostream &out) { out << used_parameters; });
+            output.write("summary.json", [&](std::ostream &out) {
+              out << "{\n";
+              bool first = true;
+              for (const auto &[key, value] : summary)
+                {
+                  out << (first ? "" : ",\n") << "  \"" << key << "\": " << value;
+                  first = false;
+                }
+              out << "\n}\n";
+            });
+          }
       }
-    const int ierr = MPI_Barrier(comm);
-    AssertThrowMPI(ierr);
-
-    std::vector<std::string> files;
-    const std::string table = contact_table(x); // (collective)
-    if (parameters.output.write_vtu)
+    catch (const std::exception &e)
       {
-        const LevelVector solution = solution_in_scene_units(x);
-        DataOut<dim>         data_out;
-        data_out.attach_dof_handler(discretization.get_dof_handler());
-        std::vector<std::string> names(dim, "u");
-        std::vector<DataComponentInterpretation::DataComponentInterpretation>
-          interpretation(dim + dim * dim,
-                         DataComponentInterpretation::component_is_part_of_vector);
-        for (unsigned int m = 0; m < dim; ++m)
-          for (unsigned int k = 0; k < dim; ++k)
-            names.push_back("sigma_row" + std::to_string(m));
-        data_out.add_data_vector(solution, names, DataOut<dim>::type_dof_data,
-                                 interpretation);
-        EquilibriumResidual<dim> equilibrium(discretization.get_scene());
-        data_out.add_data_vector(solution, equilibrium);
+        error = e.what();
+      }
+    output.publish(error);
+  }
 
-        // cellwise constitutive residual |A sigma - eps(u)|_{L2(K)} (the
-        // local least-squares error indicator) and contact status
-        const auto &tria = discretization.get_triangulation();
-        Vector<float> indicator(tria.n_active_cells()), status(tria.n_active_cells());
+
+  template <int dim>
+  void
+  Postprocessor<dim>::write_vtu(const LevelVector &x, OutputDirectory &output) const
+  {
+    const MPI_Comm comm = discretization.get_communicator();
+    const LevelVector solution = solution_in_scene_units(x);
+    DataOut<dim>         data_out;
+    data_out.attach_dof_handler(discretization.get_dof_handler());
+    std::vector<std::string> names(dim, "u");
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(dim + dim * dim,
+                     DataComponentInterpretation::component_is_part_of_vector);
+    for (unsigned int m = 0; m < dim; ++m)
+      for (unsigned int k = 0; k < dim; ++k)
+        names.push_back("sigma_row" + std::to_string(m));
+    data_out.add_data_vector(solution, names, DataOut<dim>::type_dof_data,
+                             interpretation);
+    EquilibriumResidual<dim> equilibrium(discretization.get_scene());
+    data_out.add_data_vector(solution, equilibrium);
+
+    // cellwise constitutive residual |A sigma - eps(u)|_{L2(K)} (the
+    // local least-squares error indicator) and contact status
+    const auto &tria = discretization.get_triangulation();
+    Vector<float> indicator(tria.n_active_cells()), status(tria.n_active_cells());
+    {
+      const QGauss<dim> quadrature(3);
+      FEValues<dim>     fe_values(mapping,
+                              discretization.get_fe(),
+                              quadrature,
+                              update_values | update_gradients |
+                                update_JxW_values);
+      const FEValuesExtractors::Vector displacement(0);
+      std::vector<Tensor<2, dim>>      eps(quadrature.size());
+      std::vector<Tensor<1, dim>>      row(quadrature.size());
+      std::vector<Tensor<2, dim>>      sigma(quadrature.size());
+      const auto &level = discretization.level(discretization.finest_level());
+      std::map<unsigned int, bool> active_vertex;
+      // (x's ghost values: from contact_table() above)
+      for (const auto &cv : level.contact_vertices)
+        active_vertex[cv.vertex_index] =
+          x.local_element(cv.normal_dof) >= cv.gap - 1e-12 * std::max(1., std::abs(cv.gap));
+      for (const auto &cell :
+           discretization.get_dof_handler().active_cell_iterators())
         {
-          const QGauss<dim> quadrature(3);
-          FEValues<dim>     fe_values(mapping,
-                                  discretization.get_fe(),
-                                  quadrature,
-                                  update_values | update_gradients |
-                                    update_JxW_values);
-          const FEValuesExtractors::Vector displacement(0);
-          std::vector<Tensor<2, dim>>      eps(quadrature.size());
-          std::vector<Tensor<1, dim>>      row(quadrature.size());
-          std::vector<Tensor<2, dim>>      sigma(quadrature.size());
-          const auto &level = discretization.level(discretization.finest_level());
-          std::map<unsigned int, bool> active_vertex;
-          // (x's ghost values: from contact_table() above)
-          for (const auto &cv : level.contact_vertices)
-            active_vertex[cv.vertex_index] =
-              x.local_element(cv.normal_dof) >= cv.gap - 1e-12 * std::max(1., std::abs(cv.gap));
-          for (const auto &cell :
-               discretization.get_dof_handler().active_cell_iterators())
+          if (!cell->is_locally_owned())
+            continue;
+          fe_values.reinit(cell);
+          std::vector<SymmetricTensor<2, dim>> sym(quadrature.size());
+          fe_values[displacement].get_function_symmetric_gradients(solution, sym);
+          for (unsigned int m = 0; m < dim; ++m)
             {
-              if (!cell->is_locally_owned())
-                continue;
-              fe_values.reinit(cell);
-              std::vector<SymmetricTensor<2, dim>> sym(quadrature.size());
-              fe_values[displacement].get_function_symmetric_gradients(solution, sym);
-              for (unsigned int m = 0; m < dim; ++m)
-                {
-                  fe_values[FEValuesExtractors::Vector(dim + m * dim)]
-                    .get_function_values(solution, row);
-                  for (unsigned int q = 0; q < quadrature.size(); ++q)
-                    sigma[q][m] = row[q];
-                }
-              double r = 0;
+              fe_values[FEValuesExtractors::Vector(dim + m * dim)]
+                .get_function_values(solution, row);
               for (unsigned int q = 0; q < quadrature.size(); ++q)
-                {
-                  const Tensor<2, dim> res =
-                    FoslsAssembler<dim>::compliance(sigma[q],
-                                                    parameters.material.mu,
-                                                    parameters.material.lambda) -
-                    Tensor<2, dim>(sym[q]);
-                  r += scalar_product(res, res) * fe_values.JxW(q);
-                }
-              indicator[cell->active_cell_index()] = std::sqrt(r);
-              for (const unsigned int v : cell->vertex_indices())
-                {
-                  const auto it = active_vertex.find(cell->vertex_index(v));
-                  if (it != active_vertex.end())
-                    status[cell->active_cell_index()] =
-                      std::max<float>(status[cell->active_cell_index()],
-                                      it->second ? 2.f : 1.f);
-                }
+                sigma[q][m] = row[q];
+            }
+          double r = 0;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const Tensor<2, dim> res =
+                FoslsAssembler<dim>::compliance(sigma[q],
+                                                parameters.material.mu,
+                                                parameters.material.lambda) -
+                Tensor<2, dim>(sym[q]);
+              r += scalar_product(res, res) * fe_values.JxW(q);
+            }
+          indicator[cell->active_cell_index()] = std::sqrt(r);
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const auto it = active_vertex.find(cell->vertex_index(v));
+              if (it != active_vertex.end())
+                status[cell->active_cell_index()] =
+                  std::max<float>(status[cell->active_cell_index()],
+                                  it->second ? 2.f : 1.f);
             }
         }
-        data_out.add_data_vector(indicator, "constitutive_residual",
-                                 DataOut<dim>::type_cell_data);
-        data_out.add_data_vector(status, "contact_status",
-                                 DataOut<dim>::type_cell_data);
-        data_out.build_patches(mapping);
-        // zlib's default level spent more time than the solve on large
-        // meshes (13% of a level-8 run); best_speed files are ~10% larger
-        DataOutBase::VtkFlags flags;
-        flags.compression_level = DataOutBase::VtkFlags::best_speed;
-        data_out.set_flags(flags);
-        // one piece per process
-        const std::string pvtu = data_out.write_vtu_with_pvtu_record(
-          staging.string() + "/", "solution", 0, comm, 4);
-        files.push_back(pvtu);
-        for (unsigned int p = 0; p < Utilities::MPI::n_mpi_processes(comm); ++p)
-          files.push_back("solution_0000." + std::to_string(p) + ".vtu");
-      }
-    // every piece is written before the first process moves them
-    const int ierr_pieces = MPI_Barrier(comm);
-    AssertThrowMPI(ierr_pieces);
-    if (!first)
-      return;
-
-    write_file(staging / "contact.csv", table);
-    files.push_back("contact.csv");
-    write_file(staging / "convergence.csv", monitor.csv());
-    files.push_back("convergence.csv");
-    write_file(staging / "used_parameters.prm", used_parameters);
-    files.push_back("used_parameters.prm");
-    {
-      std::ostringstream json;
-      json << "{\n";
-      bool first = true;
-      for (const auto &[key, value] : summary)
-        {
-          json << (first ? "" : ",\n") << "  \"" << key << "\": " << value;
-          first = false;
-        }
-      json << "\n}\n";
-      write_file(staging / "summary.json", json.str());
-      files.push_back("summary.json");
     }
-
-    // the solution files of an earlier run into this directory that this
-    // run does not replace (Write vtu = false, or more processes then)
-    // would be mistaken for this run's
-    for (const auto &entry : fs::directory_iterator(directory))
+    data_out.add_data_vector(indicator, "constitutive_residual",
+                             DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(status, "contact_status",
+                             DataOut<dim>::type_cell_data);
+    data_out.build_patches(mapping);
+    // zlib's default level spent more time than the solve on large
+    // meshes (13% of a level-8 run); best_speed files are ~10% larger
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
+    data_out.set_flags(flags);
+    // one piece per process, listed by the record the first process writes
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    const auto piece = [](const unsigned int p) {
+      return "solution_0000." + std::to_string(p) + ".vtu";
+    };
+    output.write(piece(rank), [&](std::ostream &out) { data_out.write_vtu(out); });
+    if (rank == 0)
       {
-        const std::string name = entry.path().filename().string();
-        if (entry.is_regular_file() && name.rfind("solution_", 0) == 0 &&
-            (name.size() > 4 && (name.substr(name.size() - 4) == ".vtu" ||
-                                 (name.size() > 5 && name.substr(name.size() - 5) == ".pvtu"))) &&
-            std::find(files.begin(), files.end(), name) == files.end())
-          fs::remove(entry.path());
+        std::vector<std::string> pieces;
+        for (unsigned int p = 0; p < Utilities::MPI::n_mpi_processes(comm); ++p)
+          pieces.push_back(piece(p));
+        output.write("solution_0000.pvtu",
+                     [&](std::ostream &out) { data_out.write_pvtu_record(out, pieces); });
       }
-    for (const auto &name : files)
-      if (fs::exists(staging / name))
-        fs::rename(staging / name, directory / name);
-    fs::remove_all(staging);
   }
 
   template class Postprocessor<2>;

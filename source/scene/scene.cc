@@ -6,6 +6,8 @@
 
 #include <fosls_contact/scene/scene.h>
 
+#include <muParser.h>
+
 #include <cctype>
 #include <cmath>
 #include <iostream>
@@ -205,9 +207,15 @@ namespace FoslsContact
     // not in the middle of the assembly.
     // muparser reports to std::cerr before deal.II throws: silence it, the
     // error is reported once, in one line, below.
+    // (restored however the block below is left: a dangling std::cerr
+    // buffer crashed the program's error report)
     std::ostringstream muted;
-    std::streambuf *   cerr_buffer = std::cerr.rdbuf(muted.rdbuf());
-    std::string        reason;
+    struct CerrRestore
+    {
+      std::streambuf *buffer;
+      ~CerrRestore() { std::cerr.rdbuf(buffer); }
+    } restore{std::cerr.rdbuf(muted.rdbuf())};
+    std::string reason;
     try
       {
         function->initialize(variables, expressions, constants);
@@ -236,7 +244,12 @@ namespace FoslsContact
         if (dashes != std::string::npos)
           reason = Utilities::trim(reason.substr(0, dashes));
       }
-    std::cerr.rdbuf(cerr_buffer);
+    catch (const mu::ParserError &e)
+      {
+        // muparser's own exception (not a std::exception): e.g. a constant
+        // name longer than muparser accepts
+        reason = e.GetMsg();
+      }
     AssertThrow(reason.empty(),
                 ExcMessage("parameter '" + name + "' = '" + expression +
                            "' is not a valid expression: " + reason));

@@ -80,7 +80,11 @@ def main():
           % ("yes" if pieces else "none",
              "yes" if pieces and all(os.path.isfile(os.path.join(directory, p))
                                      for p in pieces) else "no"))
-    leftovers = [n for n in os.listdir(directory) if n.startswith(".staging")]
+    # the staging directory and the lock file are made beside the directory
+    parent = os.path.dirname(os.path.abspath(directory))
+    name = os.path.basename(os.path.abspath(directory))
+    leftovers = [n for n in os.listdir(parent)
+                 if n.startswith("." + name + ".staging") or n == "." + name + ".lock"]
     print("staging directory left behind: %s" % ("yes" if leftovers else "no"))
 
     summary = {}

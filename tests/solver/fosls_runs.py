@@ -101,9 +101,17 @@ class Run:
         return self.summary.get(key)
 
     def ok(self):
-        """Exit code 0, nothing on stderr, summary.json written."""
-        return (self.returncode == 0 and self.stderr == ""
-                and bool(self.summary))
+        """The run ended normally with its output written: exit code 0
+        and nothing on stderr, or, when the solver did not converge
+        (summary.json "converged": false), exit code 2 and the one line on
+        stderr that says so."""
+        if not self.summary:
+            return False
+        if self.summary.get("converged") is False:
+            lines = self.stderr.splitlines()
+            return (self.returncode == 2 and len(lines) == 1
+                    and "not converged" in lines[0])
+        return self.returncode == 0 and self.stderr == ""
 
     @property
     def force(self):
@@ -157,14 +165,9 @@ class Runner:
         the output goes to ./run_NN_<name>, without vtu files."""
         self.count += 1
         directory = "run_%02d" % self.count + ("_" + name if name else "")
-        command = [self.exe, os.path.join(self.source, prm),
-                   "--set", "Output/Directory=" + directory,
-                   "--set", "Output/Write vtu=false"]
-        if processes > 1:
-            command = [os.environ.get("MPIRUN", "mpirun"), "--oversubscribe",
-                       "-np", str(processes)] + command
-        for s in settings:
-            command += ["--set", s]
+        command = command_line(self.exe, os.path.join(self.source, prm),
+                               ["Output/Directory=" + directory,
+                                "Output/Write vtu=false"] + list(settings), processes)
         with open(directory + ".cmd", "w") as f:
             f.write(" ".join("'%s'" % c if " " in c or ";" in c else c
                              for c in command) + "\n")
@@ -294,3 +297,48 @@ def check_plain_cycle(runner, label, prm, scene):
                               reference["contact_force"]) <= 1e-6,
           label + ": |F - F_ref| / |F_ref| <= 1e-6")
     return run
+
+
+def command_line(exe, prm, settings=(), processes=1):
+    """The command that runs @p exe on @p prm with the "Section/Name=value"
+    strings @p settings, on @p processes MPI processes (mpirun from
+    $MPIRUN, --quiet: no report of its own on a non-zero exit code)."""
+    command = [exe, prm]
+    for s in settings:
+        command += ["--set", s]
+    if processes > 1:
+        command = [os.environ.get("MPIRUN", "mpirun"), "--quiet", "--oversubscribe",
+                   "-np", str(processes)] + command
+    return command
+
+
+def execute(command, env=None, timeout=300, stdout=subprocess.PIPE):
+    """Run @p command (a list) with the extra environment variables @p env;
+    return (exit code, stdout text, stderr text). A run that takes longer
+    than @p timeout seconds is killed (exit code None)."""
+    environment = dict(os.environ)
+    environment.update(env or {})
+    try:
+        p = subprocess.run(command, env=environment, stdout=stdout,
+                           stderr=subprocess.PIPE, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return None, "", ""
+    decode = lambda b: b.decode("utf-8", "backslashreplace") if b else ""
+    return p.returncode, decode(p.stdout), decode(p.stderr)
+
+
+def one_error_line(stderr, *parts):
+    """stderr is exactly one line, 'fosls-contact: error in ...', and
+    contains every string of @p parts."""
+    lines = stderr.splitlines()
+    return (len(lines) == 1 and lines[0].startswith("fosls-contact: error in ")
+            and all(p in lines[0] for p in parts))
+
+
+def leftovers(directory):
+    """What a run may leave beside @p directory: its staging directories and
+    its lock file."""
+    parent = os.path.dirname(os.path.abspath(directory)) or "."
+    name = os.path.basename(os.path.abspath(directory))
+    return sorted(n for n in os.listdir(parent)
+                  if n.startswith("." + name + ".staging") or n == "." + name + ".lock")

@@ -37,6 +37,6 @@ for label, processes, extra in [("2 processes", 2, []), ("then 1 process", 1, []
     else:
         check(files == sorted(listed_pieces() + ["solution_0000.pvtu"]),
               label + ": the solution files are the .pvtu and the pieces it lists")
-    check(not any(f.startswith(".staging") for f in os.listdir(directory)),
-          label + ": no staging directory left")
+    check(not any(f.startswith("." + directory + ".") for f in os.listdir(".")),
+          label + ": no staging directory or lock file left")
 finish()

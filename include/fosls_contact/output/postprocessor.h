@@ -3,6 +3,7 @@
 
 #include <fosls_contact/discretization/discretization.h>
 #include <fosls_contact/output/monitor.h>
+#include <fosls_contact/output/output_directory.h>
 #include <fosls_contact/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/scene/physical_mapping.h>
@@ -35,14 +36,13 @@ namespace FoslsContact
    * coordinates, converts it to the scene's units (PhysicalMapping: the
    * mesh times L, displacements times L, stresses times S) and computes
    * what users look at (contact force, contact table, error norms), then
-   * writes every output file. All files are first
-   * written into a staging directory and then renamed into the output
-   * directory, so an interrupted run never leaves a half-written file.
+   * writes every output file into the staging directory of an
+   * OutputDirectory and publishes them there, all at once.
    *
    * Distributed: every process integrates over its own cells and writes
    * one VTU piece of them; the numbers are summed over the processes, the
    * contact table gathered (rows sorted by position), and the first
-   * process writes the other files and moves everything into place.
+   * process writes the other files.
    */
   template <int dim>
   class Postprocessor
@@ -93,15 +93,19 @@ namespace FoslsContact
 
     /**
      * Write VTU (+pvtu), contact.csv, convergence.csv, summary.json and
-     * used_parameters.prm. @p summary holds the JSON fields (already
-     * formatted values).
+     * used_parameters.prm into @p output and publish them (collective).
+     * @p summary holds the JSON fields (already formatted values).
      */
     void write(const LevelVector &                        x_rotated,
                const Monitor &                            monitor,
                const std::map<std::string, std::string> &summary,
-               const std::string &                        used_parameters) const;
+               const std::string &                        used_parameters,
+               OutputDirectory &                          output) const;
 
   private:
+    /** The solution's VTU piece of this process, and on the first the pvtu record. */
+    void write_vtu(const LevelVector &x_rotated, OutputDirectory &output) const;
+
     const Discretization<dim> &     discretization;
     const Parameters::AllParameters parameters;
     const Scaling                   scaling;

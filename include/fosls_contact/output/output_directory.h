@@ -1,0 +1,100 @@
+#ifndef fosls_contact_output_output_directory_h
+#define fosls_contact_output_output_directory_h
+
+#include <mpi.h>
+
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace FoslsContact
+{
+  /**
+   * The output directory of one run (parameter Output/Directory), whose
+   * files appear all at once when the run ends, or not at all.
+   *
+   * The constructor, called before the set-up, checks that the directory
+   * can be made and written, locks it against a second run into it (flock
+   * on `.<name>.lock` beside it: the second run fails at once) and makes a
+   * staging directory `.<name>.staging-<pid>` beside it; an unusable
+   * directory is an error before any work is done. The run writes every
+   * file into the staging directory (each process its own pieces) and
+   * fsyncs it; publish() then puts the staging directory in the place of
+   * the old directory in one step (renameat2 with RENAME_EXCHANGE; where
+   * the filesystem refuses that, two renames, between which the path
+   * briefly does not exist, but never holds files of two runs).
+   *
+   * Files the run did not write are kept: a file `.fosls-contact-files` in
+   * the directory lists the files the run wrote; the next run removes
+   * those of them it does not write again, and carries every other file
+   * and directory over into the new directory (files as hard links before
+   * the swap, directories moved after it). A file with the name of an
+   * output file is replaced. As the directory is replaced, it must be one
+   * the program wrote (with that list), or new, or hold nothing but output
+   * files: the swap never takes someone's other directory (/tmp, a home
+   * directory, the current directory).
+   *
+   * Every error is thrown on every process with the same one-line text,
+   * naming Output/Directory; the destructor removes the staging
+   * directory, the lock file and the parent directories the run made, if
+   * the files were not published.
+   */
+  class OutputDirectory
+  {
+  public:
+    /** Check, lock and prepare @p directory (collective on @p comm). */
+    OutputDirectory(const std::string &directory, const MPI_Comm comm);
+    ~OutputDirectory();
+    OutputDirectory(const OutputDirectory &) = delete;
+    OutputDirectory &operator=(const OutputDirectory &) = delete;
+
+    /**
+     * Write the file @p name of this process into the staging directory
+     * with @p writer, and fsync it. Throws (on this process) if the file
+     * cannot be written completely.
+     */
+    void write(const std::string &name, const std::function<void(std::ostream &)> &writer);
+
+    /**
+     * Publish the files every process wrote (collective). @p error is this
+     * process's failure to write its files ("" if none): if any process
+     * failed, nothing is published and every process throws the first
+     * failure.
+     */
+    void publish(const std::string &error);
+
+    /** The name of the list of the files a run wrote, in the directory. */
+    static const std::string manifest_name;
+
+  private:
+    /** The work of the constructor on the first process. */
+    void prepare();
+    /** The work of publish() on the first process. */
+    void publish_here(const std::set<std::string> &names);
+    /** Remove the staging or old directory @p stale of an earlier run (killed). */
+    void clean_stale(const std::filesystem::path &stale) const;
+    /**
+     * Remove the staging directory (unless published), the lock file and
+     * the parent directories made (unless published).
+     */
+    void release() noexcept;
+    /** "parameter 'Output/Directory' = '...'" for messages. */
+    std::string parameter() const;
+
+    const std::string     given;
+    const MPI_Comm        comm;
+    const bool            first;
+    std::filesystem::path directory, staging, lock_path;
+    int                   lock_fd = -1;
+    /** Parent directories this run made (removed if nothing is published). */
+    std::vector<std::filesystem::path> made;
+    /** The files this process wrote. */
+    std::vector<std::string> written;
+    bool                     published = false;
+  };
+} // namespace FoslsContact
+
+#endif

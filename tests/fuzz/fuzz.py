@@ -1,0 +1,342 @@
+"""Fuzz the command line, the scene files and the parameter values of
+fosls-contact.
+
+usage: fuzz.py FOSLS_CONTACT SOURCE_DIR [--cases N] [--seed S] [--jobs J]
+
+Generates N cases (default 600) with a fixed seed (default 1) from the
+scenes in tests/scenes (Geometry/Levels = 2, at most 20 iterations, one
+thread): random valid values (which reach the solver: weights, solver
+choices, data expressions, ...), random and malformed values of every
+parameter (huge numbers,
+NaN/inf, empty, control characters, bounds +-1), random expressions and
+constants, malformed --set arguments and options, scene files mutated
+(truncated, lines dropped, doubled or swapped, garbage bytes, unbalanced
+subsections, includes of themselves, of each other, of missing files, of
+devices), files of garbage bytes, empty files and JSON scenes (as
+--print-parameters writes them) mutated. Each case runs in its own
+directory with a timeout of 60 s. A case fails on a crash (a signal), a
+hang (the timeout), an exit code other than 0, 1 or 2, an exit code 1
+whose stderr is not exactly one line `fosls-contact: error in ...` without
+raw control bytes, output files (or a staging directory, a lock file)
+left after an error, or a run with exit code 0 or 2 without its
+summary.json, or with something on stderr beyond the one line of exit 2.
+
+Prints the number of cases and of failures of each kind (all 0 when the
+program is right); every failing case is printed with the command that
+reproduces it (its files stay in case_NNNN/) and the script exits with 1.
+"""
+import concurrent.futures
+import json
+import os
+import random
+import re
+import subprocess
+import sys
+
+SCENES = ["square.prm", "hertz.prm", "cube3d.prm", "elasticity_mms.prm",
+          "square_tilted_obstacle.prm"]
+TIMEOUT = 60
+# valid values that would make a case slow (big meshes, many iterations)
+SAFE_MAX = {"Levels": 3, "Box subdivisions": 4, "Half disc coarse refinements": 3,
+            "Threads": 4, "Max iterations": 50, "Pre smoothing": 5, "Post smoothing": 5,
+            "Krylov steps": 50, "Definiteness check max dofs": 20000}
+NUMBERS = ["0", "-0", "1", "-1", "0.5", "1e-300", "1e300", "1e308", "1e309", "-1e309",
+           "nan", "NaN", "inf", "-inf", "infinity", "abc", "", " ", "1e", "0x10", "1.5.2",
+           "99999999999999999999", "2147483648", "-2147483649", "1,2", "{1}", "1 2",
+           "\x01", "1\x7f", "\u00e9", "%s%n", "1;2"]
+TOKENS = ["x", "y", "z", "1", "0", "2.5", "-", "+", "*", "/", "^", "(", ")", "sin", "cos",
+          "exp", "log", "sqrt", "pi", "1e308", "nan", "inf", ";", ",", "if", "a", "_", "$",
+          "&&", "==", "?", ":", "<", ">", " ", "abs", "min", "max", "rand"]
+EXPRESSIONS = ["", ";", ";;", "1;2", "0; 0", "0; 0; 0", "1/(x-x)", "sqrt(-1)", "log(0)",
+               "exp(1000)", "x^1e10", "1e308*1e308", "sin(", "(((((", "a" * 150,
+               "if(x<0.5,1,0)", "0; -0.01", "x; y", "nan; 0", "0; inf", "x y", "1e309",
+               "0;" * 40, "\x00", "0; -0.01\n0"]
+CONSTANTS = ["a=1", "a=b", "=1", "a=", "a=1,a=2", "x=1", "pi=3", "1a=2", "a" * 120 + "=1",
+             "a=nan", "a=1e309", "a=1=2", ",", "a=1,,b=2", "_=1", "z=1", "a b=1", "\x01=1"]
+DIRECTORIES = ["", " ", ".", "..", "/", "/proc/fuzz", "a/b/c", "x\x01y", "out/", "out//x",
+               "scene.prm", "scene.prm/x", "d" * 300, "~", "-", "*", "out/../out2"]
+SET_ARGUMENTS = ["", "=", "Solver", "Solver/", "/=1", "Solver/=1", "/Tolerance=1",
+                 "Solver/Tolerance", "a/b/c/d=1", "Solver//Tolerance=1", "Solver/Tolerance==1",
+                 "Solvr/Tolerance=1", "Solver/Tolerence=1", "\u00e9/\u00e9=\u00e9",
+                 "Solver/Type=\x1b[31m", "Output/Directory=a\nb", "x" * 5000 + "=1",
+                 "Geometry/Levels= 2 ", "Geometry/Levels=2\r"]
+OPTIONS = [["--foo"], ["-"], ["--"], ["--set"], ["--help", "--set", "x"], ["--version"],
+           ["--print-parameters"], ["--print-parameters", "--set", "Solver/Tolerance=1"],
+           ["a.prm", "b.prm"], ["--set=Solver/Tolerance=1"], ["-h"], ["--print-parameters", "-"]]
+LINES = ["subsection", "subsection Nope", "end", "end end", "END", "set", "set =", "set = 1",
+         "set Levels", "set Levels = = 2", "include", "include ", "include /dev/null",
+         "include /dev/zero", "include /proc/self/environ", "include .", "include missing.prm",
+         "include scene.prm", "include other.prm", "\\", "# comment", "\t\tset\tLevels\t=\t2",
+         "subsection Geometry\\", "set Levels = 2 # \\", "\x00\x01\x02", "\xff\xfe"]
+
+
+def catalogue(exe):
+    """Every parameter: (section path, name, pattern description)."""
+    out = subprocess.run([exe, "--print-parameters"], stdout=subprocess.PIPE,
+                         check=True).stdout
+    entries = []
+
+    def walk(node, path):
+        for key, value in node.items():
+            if isinstance(value, dict) and "value" in value:
+                entries.append((path, key, value.get("pattern_description", "")))
+            elif isinstance(value, dict):
+                walk(value, path + [key])
+    walk(json.loads(out), [])
+    return entries
+
+
+def value_for(rng, name, pattern):
+    """A random value for a parameter with @p pattern."""
+    if name.startswith("Directory"):
+        return rng.choice(DIRECTORIES)
+    if name == "Constants":
+        return rng.choice(CONSTANTS)
+    if pattern.startswith("[Selection"):
+        choices = pattern[11:-2].split("|")
+        return rng.choice(choices + [c.upper() for c in choices] + ["", " x", choices[0] + " "])
+    if pattern == "[Bool]":
+        return rng.choice(["true", "false", "yes", "1", "", "TRUE", "false "])
+    if pattern.startswith("[Integer"):
+        bounds = re.findall(r"-?\d+", pattern)
+        low = int(bounds[0]) if bounds else 0
+        high = min(int(bounds[1]) if len(bounds) > 1 else 10, SAFE_MAX.get(name, 10 ** 9))
+        values = [str(low - 1), str(low), str(min(low + 1, high)), str(high), str(high + 1)]
+        if name in SAFE_MAX:
+            values.remove(str(high + 1))
+        return rng.choice(values + [v for v in NUMBERS if not re.fullmatch(r"\d+", v)])
+    if pattern.startswith("[List"):
+        if name in SAFE_MAX:
+            return rng.choice(["1, 1", "2, 1", "0, 1", "1", "1, 1, 1", "", "a, b", "1,,1"])
+        return ", ".join(rng.choice(NUMBERS[:12]) for _ in range(rng.randint(0, 4)))
+    if name in ("lambda",) or pattern.startswith("[Double"):
+        return rng.choice(NUMBERS)
+    # [Anything]: expressions and lists
+    if rng.random() < 0.5:
+        return rng.choice(EXPRESSIONS)
+    return "".join(rng.choice(TOKENS) for _ in range(rng.randint(1, 8)))
+
+
+def valid_value_for(rng, name, pattern, dim):
+    """A random value that the pattern accepts (the run may still refuse it:
+    an indefinite functional, a NaN iterate, no convergence, ...)."""
+    if pattern.startswith("[Selection"):
+        return rng.choice(pattern[11:-2].split("|"))
+    if pattern == "[Bool]":
+        return rng.choice(["true", "false"])
+    if pattern.startswith("[Integer"):
+        bounds = re.findall(r"-?\d+", pattern)
+        low = int(bounds[0]) if bounds else 0
+        high = min(int(bounds[1]) if len(bounds) > 1 else 10, SAFE_MAX.get(name, 1000))
+        return str(rng.randint(low, max(low, high)))
+    if pattern.startswith("[Double"):
+        bounds = re.findall(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?", pattern)
+        low = float(bounds[0]) if bounds else -1e300
+        high = float(bounds[1]) if len(bounds) > 1 and "MAX" not in pattern.split("...")[1] \
+            else 1e300
+        candidates = [v for v in [0, 1e-12, 1e-8, 0.1, 0.5, 1, 2, 10, 1e3, 1e10, 1e300, -1, -1e10]
+                      if low <= v <= high]
+        return repr(rng.choice(candidates or [low]))
+    if name == "lambda":
+        return rng.choice(["0", "1", "1e10", "inf", "1e300"])
+    if name == "Constants":
+        return rng.choice(["a=1", "a=1,b=2", "k=1e10", "k=0", ""])
+    if name.endswith("ids") or name == "Dirichlet components":
+        return rng.choice(["", "0", "1", "2", "0, 1", "0, 1, 2, 3", "7", "all", "0: 0"])
+    if name.startswith("Directory"):
+        return rng.choice(["out", "out/sub", "o2"])
+    n = {"Exact stress": dim * dim, "Gap": 1}.get(name, dim)
+    pieces = ["0", "x", "y", "-0.01", "sin(pi*x)", "1e10*x", "x*y", "exp(x)", "1e-300",
+              "1/(1+x*x)", "if(x<0.5,0,-0.01)"]
+    return "; ".join(rng.choice(pieces) for _ in range(n))
+
+
+def mutate_scene(rng, text):
+    lines = text.split("\n")
+    kind = rng.randrange(7)
+    if kind == 0 and lines:
+        return "\n".join(lines[:rng.randrange(len(lines))]) + ("\n" if rng.random() < 0.5 else "")
+    if kind == 1 and text:
+        return text[:rng.randrange(len(text))]
+    if kind == 2 and lines:
+        del lines[rng.randrange(len(lines))]
+    elif kind == 3 and lines:
+        i = rng.randrange(len(lines))
+        lines.insert(i, lines[i])
+    elif kind == 4 and len(lines) > 1:
+        i, j = rng.randrange(len(lines)), rng.randrange(len(lines))
+        lines[i], lines[j] = lines[j], lines[i]
+    elif kind == 5:
+        lines.insert(rng.randrange(len(lines) + 1), rng.choice(LINES))
+    else:
+        garbage = "".join(chr(rng.randrange(256)) for _ in range(rng.randint(1, 20)))
+        lines.insert(rng.randrange(len(lines) + 1), garbage)
+    return "\n".join(lines)
+
+
+def make_case(rng, number, source, entries):
+    """(arguments, {file name: bytes}, kind) of case @p number."""
+    scene_name = rng.choice(SCENES)
+    with open(os.path.join(source, "tests/scenes", scene_name)) as f:
+        base = f.read()
+    base_arguments = ["--set", "Geometry/Levels=2", "--set", "Solver/Max iterations=20",
+                      "--set", "Solver/Threads=1", "--set", "Output/Directory=out",
+                      "--set", "Output/Verbose=false"]
+    files = {}
+    kind = rng.choice(["valid", "valid", "valid", "valid", "value", "value", "expression",
+                       "set", "option", "file", "file", "garbage", "json", "include"])
+    arguments = ["scene.prm"] + base_arguments
+    files["scene.prm"] = base.encode()
+    if kind == "valid":
+        dim = 3 if "cube3d" in scene_name else 2
+        for _ in range(rng.randint(1, 2)):
+            path, name, pattern = rng.choice(entries)
+            if name in ("Dimension", "Shape"):
+                continue
+            arguments += ["--set", "/".join(path + [name]) + "="
+                          + valid_value_for(rng, name, pattern, dim)]
+    elif kind == "value":
+        for _ in range(rng.randint(1, 3)):
+            path, name, pattern = rng.choice(entries)
+            arguments += ["--set", "/".join(path + [name]) + "=" + value_for(rng, name, pattern)]
+    elif kind == "expression":
+        name = rng.choice(["Body force", "Dirichlet values", "Traction", "Gap",
+                           "Obstacle normal", "Exact displacement", "Exact stress",
+                           "Initial displacement", "Constants"])
+        value = value_for(rng, name, "[Anything]")
+        arguments += ["--set", "Data/" + name + "=" + value]
+        if name == "Initial displacement":
+            arguments += ["--set", "Solver/Initial guess=expression"]
+    elif kind == "set":
+        arguments += ["--set", rng.choice(SET_ARGUMENTS)]
+    elif kind == "option":
+        option = rng.choice(OPTIONS)
+        arguments = option + (arguments if rng.random() < 0.5 else [])
+    elif kind == "file":
+        text = base
+        for _ in range(rng.randint(1, 3)):
+            text = mutate_scene(rng, text)
+        files["scene.prm"] = text.encode("latin-1", "replace")
+        files["other.prm"] = b"include scene.prm\n"
+    elif kind == "garbage":
+        size = rng.choice([0, 1, 10, 1000, 100000])
+        files["scene.prm"] = bytes(rng.randrange(256) for _ in range(size))
+        if rng.random() < 0.2:
+            files["scene.prm"] = b"set " + b"x" * 200000 + b"\n"
+    elif kind == "json":
+        text = subprocess.run([EXE, "--print-parameters", os.path.join(source, "tests/scenes",
+                                                                       scene_name)]
+                              + base_arguments, stdout=subprocess.PIPE).stdout.decode()
+        if rng.random() < 0.5:
+            text = text[:rng.randrange(len(text) + 1)]
+        else:
+            tree = json.loads(text)
+            path, name, pattern = rng.choice(entries)
+            node = tree
+            for p in path:
+                node = node[p]
+            node[name] = rng.choice([{"value": value_for(rng, name, pattern)},
+                                     value_for(rng, name, pattern), 1, None, [], {}])
+            text = json.dumps(tree)
+        files["scene.json"] = text.encode()
+        arguments = ["scene.json"]
+    else:  # include
+        target = rng.choice(["scene.prm", "other.prm", "missing.prm", "sub/inner.prm", "/dev/null",
+                             "sub", "../" + "x" * 300])
+        files["main.prm"] = ("include %s\n" % target).encode()
+        files["other.prm"] = b"include main.prm\n"
+        files["sub/inner.prm"] = b"include ../main.prm\n"
+        arguments = ["main.prm"] + base_arguments
+    return arguments, files, kind
+
+
+def listing(directory):
+    found = []
+    for root, dirs, names in os.walk(directory):
+        for n in dirs + names:
+            found.append(os.path.relpath(os.path.join(root, n), directory))
+    return sorted(found)
+
+
+def run_case(number, arguments, files, kind):
+    directory = "case_%04d" % number
+    os.makedirs(directory)
+    for name, content in files.items():
+        os.makedirs(os.path.join(directory, os.path.dirname(name)), exist_ok=True)
+        with open(os.path.join(directory, name), "wb") as f:
+            f.write(content)
+    before = listing(directory)
+    # (a command line cannot hold a NUL byte)
+    command = [EXE] + [a.replace("\x00", "\x01") for a in arguments]
+    try:
+        p = subprocess.run(command, cwd=directory, stdout=subprocess.PIPE,
+                           stderr=subprocess.PIPE, timeout=TIMEOUT, stdin=subprocess.DEVNULL)
+        rc, out, err = p.returncode, p.stdout, p.stderr
+    except subprocess.TimeoutExpired:
+        return number, "hang", command, "no end within %d s" % TIMEOUT
+    after = listing(directory)
+    lines = err.split(b"\n")[:-1] if err.endswith(b"\n") else err.split(b"\n")
+    raw = [c for c in err[:-1] if c < 0x20 or c == 0x7f]
+    leftovers = [n for n in after if re.search(r"\.staging-|\.lock$", n)]
+    if rc < 0:
+        return number, "crash", command, "signal %d" % -rc
+    if rc not in (0, 1, 2):
+        return number, "exit code", command, "exit code %d" % rc
+    if rc == 1:
+        if len(lines) != 1 or not lines[0].startswith(b"fosls-contact: error in ") or raw:
+            return number, "error line", command, repr(err[:300])
+        if after != before:
+            return number, "files after an error", command, repr(sorted(set(after) - set(before)))
+        return number, None, command, ""
+    printing = any(a in ("--help", "-h", "--version", "--print-parameters") for a in arguments)
+    if leftovers:
+        return number, "files after an error", command, repr(leftovers)
+    if rc == 2 and (len(lines) != 1 or b"not converged" not in lines[0]):
+        return number, "error line", command, repr(err[:300])
+    if rc == 0 and err:
+        return number, "error line", command, repr(err[:300])
+    if printing:
+        if "--print-parameters" in arguments and not any(a in ("--help", "-h", "--version")
+                                                         for a in arguments):
+            try:
+                json.loads(out)
+            except ValueError:
+                return number, "output", command, "--print-parameters printed no JSON"
+        return number, None, command, ""
+    if not any(n.endswith("summary.json") for n in after):
+        return number, "output", command, "exit code %d without summary.json" % rc
+    return number, None, command, ""
+
+
+def main():
+    global EXE
+    arguments = sys.argv[1:]
+    options = {"--cases": "600", "--seed": "1", "--jobs": "2"}
+    while len(arguments) > 2:
+        value = arguments.pop()
+        options[arguments.pop()] = value
+    EXE, source = os.path.abspath(arguments[0]), arguments[1]
+    rng = random.Random(int(options["--seed"]))
+    entries = catalogue(EXE)
+    cases = [make_case(rng, n, source, entries) for n in range(int(options["--cases"]))]
+    failures = {k: [] for k in ["crash", "hang", "exit code", "error line",
+                                "files after an error", "output"]}
+    with concurrent.futures.ThreadPoolExecutor(int(options["--jobs"])) as pool:
+        for number, failure, command, detail in pool.map(lambda c: run_case(c[0], *c[1]),
+                                                         enumerate(cases)):
+            if failure:
+                failures[failure].append((number, command, detail))
+    print("cases: %d (seed %s)" % (len(cases), options["--seed"]))
+    for kind, found in failures.items():
+        print("%s: %d" % (kind, len(found)))
+    for kind, found in failures.items():
+        for number, command, detail in found:
+            print("FAILED case_%04d (%s): %s\n  cd case_%04d && %s" % (
+                number, kind, detail, number,
+                " ".join(repr(a) if re.search(r"[^\w./=-]", a) else a for a in command)))
+    sys.exit(1 if any(failures.values()) else 0)
+
+
+EXE = None
+if __name__ == "__main__":
+    main()

@@ -2,6 +2,7 @@
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/utilities.h>
 
+#include <fosls_contact/assembly/error_indicators.h>
 #include <fosls_contact/assembly/fosls_assembler.h>
 #include <fosls_contact/build_info.h>
 #include <fosls_contact/fosls_problem.h>
@@ -527,6 +528,14 @@ namespace FoslsContact
     for (unsigned int d = 0; d < dim; ++d)
       f += (d ? ", " : "") + number(force[d]);
     summary["contact_force"]         = f + "]";
+    // the error indicators: the cellwise parts of J (their sum)
+    ErrorIndicators<dim> indicators(*discretization, parameters.weights);
+    indicators.compute(solution);
+    summary["error_indicators"] =
+      "{\"sum\": " + number(J_unit * indicators.total()) +
+      ", \"max\": " + number(std::sqrt(J_unit * indicators.max_squared())) +
+      ", \"cells\": " + std::to_string(discretization->get_triangulation().n_global_active_cells()) +
+      ", \"cells_for_half_of_J\": " + std::to_string(indicators.cells_for_half()) + "}";
     {
       const FieldMaxima maxima   = post.field_maxima(cartesian);
       summary["max_displacement"] = number(maxima.displacement);
@@ -645,7 +654,7 @@ namespace FoslsContact
           pcout << ' ' << std::setprecision(8) << force[d];
         pcout << std::defaultfloat << std::endl;
       }
-    post.write(solution, *monitor, summary, used_parameters, output);
+    post.write(solution, *monitor, summary, used_parameters, indicators, output);
     pcout << "Output written to " << parameters.output.directory << "/"
           << std::endl;
   }

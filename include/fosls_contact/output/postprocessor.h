@@ -1,6 +1,7 @@
 #ifndef fosls_contact_output_postprocessor_h
 #define fosls_contact_output_postprocessor_h
 
+#include <fosls_contact/assembly/error_indicators.h>
 #include <fosls_contact/discretization/discretization.h>
 #include <fosls_contact/output/monitor.h>
 #include <fosls_contact/output/output_directory.h>
@@ -100,11 +101,29 @@ namespace FoslsContact
                const Monitor &                            monitor,
                const std::map<std::string, std::string> &summary,
                const std::string &                        used_parameters,
+               const ErrorIndicators<dim> &               indicators,
                OutputDirectory &                          output) const;
 
   private:
-    /** The solution's VTU piece of this process, and on the first the pvtu record. */
-    void write_vtu(const LevelVector &x_rotated, OutputDirectory &output) const;
+    /**
+     * The solution's VTU piece of this process (the fields of
+     * StressFields, the error indicators, the contact status), and on the
+     * first process the pvtu record and the pvd series; with contact, the
+     * same for the ContactSurface.
+     */
+    void write_vtu(const LevelVector &         x_rotated,
+                   const ErrorIndicators<dim> &indicators,
+                   OutputDirectory &           output) const;
+    /**
+     * Write the piece @p name.<process>.vtu of @p writer (a DataOut or
+     * DataOutFaces after build_patches) and, on the first process, the
+     * record @p name.pvtu, both naming the @p active fields.
+     */
+    template <typename Writer>
+    void write_pieces(Writer &           writer,
+                      const std::string &name,
+                      const std::string &active,
+                      OutputDirectory &  output) const;
 
     const Discretization<dim> &     discretization;
     const Parameters::AllParameters parameters;

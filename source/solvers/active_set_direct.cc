@@ -2,6 +2,8 @@
 
 #include <fosls_contact/solvers/active_set_direct.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace FoslsContact
@@ -115,6 +117,113 @@ namespace FoslsContact
   }
 
 
+  ActiveSetDirect::Outcome
+  ActiveSetDirect::primal_active_set(const SparseMatrix<double> &A,
+                                     const LevelVector &         b,
+                                     const std::vector<DoFRole> &role,
+                                     const LevelVector &         ub,
+                                     LevelVector &               x,
+                                     const unsigned int          max_steps,
+                                     Monitor *                   monitor,
+                                     const SparsityPattern *     factorization_pattern)
+  {
+    const auto &       partitioner = x.get_partitioner();
+    const unsigned int n_owned     = x.locally_owned_size();
+    const MPI_Comm     comm        = x.get_mpi_communicator();
+    const double       eps         = std::numeric_limits<double>::epsilon();
+    auto bounded = [&](const unsigned int i) {
+      return role[i] == DoFRole::bounded && A.diag_element(i) > 0.;
+    };
+    // a feasible start, the DoFs at their bound held there (the working set)
+    std::vector<bool> working(n_owned, false), eliminated(role.size(), false);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (bounded(i) && x.local_element(i) >= ub.local_element(i))
+        {
+          x.local_element(i) = ub.local_element(i);
+          working[i]         = true;
+        }
+    LevelVector target(partitioner), Ax(partitioner), x_old;
+    for (unsigned int step = 0; step < max_steps; ++step)
+      {
+        // the minimizer on the face of the working set
+        for (unsigned int i = 0; i < n_owned; ++i)
+          eliminated[i] = role[i] == DoFRole::fixed || A.diag_element(i) <= 0. || working[i];
+        {
+          std::vector<unsigned char> e(eliminated.begin(), eliminated.end());
+          exchange_ghosts(partitioner, e);
+          std::copy(e.begin(), e.end(), eliminated.begin());
+        }
+        target = x;
+        solve_reduced(A, factorization_pattern, b, eliminated, target);
+        target -= x; // the direction
+
+        // as far along it as the bounds allow; the bounds that stop it join
+        // the working set
+        double t = 1.;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          if (bounded(i) && !working[i] && target.local_element(i) > 0.)
+            t = std::min(t,
+                         std::max(0., ub.local_element(i) - x.local_element(i)) /
+                           target.local_element(i));
+        t = Utilities::MPI::min(t, comm);
+        if (monitor)
+          x_old = x;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          {
+            const double xi = x.local_element(i) + t * target.local_element(i);
+            if (bounded(i) && !working[i] && target.local_element(i) > 0. &&
+                xi >= ub.local_element(i))
+              {
+                x.local_element(i) = ub.local_element(i);
+                working[i]         = true;
+              }
+            else
+              x.local_element(i) = xi;
+          }
+
+        // At the face's minimizer, the bound with the most negative
+        // multiplier (scaled to be independent of the DoF's scale) leaves
+        // the working set; multipliers within the round-off of their row
+        // count as zero (a degenerate bound, whose multiplier is zero at
+        // the solution, would otherwise leave and return by round-off).
+        bool done = false;
+        if (t == 1.)
+          {
+            vmult(A, Ax, x);
+            std::pair<double, types::global_dof_index> release{0., 0};
+            for (unsigned int i = 0; i < n_owned; ++i)
+              if (working[i])
+                {
+                  double row = std::abs(b.local_element(i));
+                  for (auto e = A.begin(i); e != A.end(i); ++e)
+                    row += std::abs(e->value() * x.local_element(e->column()));
+                  const double mu = b.local_element(i) - Ax.local_element(i);
+                  if (mu < -1e3 * eps * row)
+                    release = std::min(release,
+                                       std::make_pair(mu / std::sqrt(A.diag_element(i)),
+                                                      partitioner->local_to_global(i)));
+                }
+            // (the same choice on every process: the smallest multiplier,
+            // ties to the smallest global index)
+            const auto all = gather_all(comm, release);
+            release        = *std::min_element(all.begin(), all.end());
+            if (release.first < 0.)
+              {
+                if (partitioner->in_local_range(release.second))
+                  working[partitioner->global_to_local(release.second)] = false;
+              }
+            else
+              done = true;
+          }
+        if (monitor && monitor->report(x, x_old) && !monitor->converged() && !done)
+          return Outcome::out_of_steps;
+        if (done)
+          return Outcome::converged;
+      }
+    return Outcome::out_of_steps;
+  }
+
+
   bool
   ActiveSetDirect::solve_quietly(const SparseMatrix<double> &A,
                                  const LevelVector &         b,
@@ -123,9 +232,10 @@ namespace FoslsContact
                                  LevelVector &               x,
                                  const unsigned int          max_steps)
   {
-    // A repeated active set means the method cycles: the last solve is the
-    // best there is, and the caller's KKT residual shows its quality.
-    return iterate(A, b, role, ub, x, max_steps, nullptr) == Outcome::converged;
+    Outcome outcome = iterate(A, b, role, ub, x, max_steps, nullptr);
+    if (outcome == Outcome::cycling)
+      outcome = primal_active_set(A, b, role, ub, x, max_steps, nullptr);
+    return outcome == Outcome::converged;
   }
 
 
@@ -137,21 +247,24 @@ namespace FoslsContact
     update_ghosts(x);
     qp.project_to_feasible(x);
     monitor.start(x);
-    const Outcome outcome = iterate(qp.matrix,
-                                    qp.rhs,
-                                    qp.role,
-                                    qp.upper_bounds,
-                                    x,
-                                    std::numeric_limits<unsigned int>::max(),
-                                    &monitor,
-                                    qp.coupling_sparsity);
-    AssertThrow(outcome != Outcome::cycling,
-                ExcMessage(monitor.name() +
-                           ": the primal-dual active set method cycles (an active set "
-                           "repeated); " +
-                           (monitor.name() == "active set" ?
-                              "use Solver/Type = monotone multigrid" :
-                              "use 'Solver/Initial guess' = zero")));
+    const unsigned int no_limit = std::numeric_limits<unsigned int>::max();
+    Outcome            outcome  = iterate(qp.matrix,
+                                qp.rhs,
+                                qp.role,
+                                qp.upper_bounds,
+                                x,
+                                no_limit,
+                                &monitor,
+                                qp.coupling_sparsity);
+    if (outcome == Outcome::cycling)
+      outcome = primal_active_set(qp.matrix,
+                                  qp.rhs,
+                                  qp.role,
+                                  qp.upper_bounds,
+                                  x,
+                                  no_limit,
+                                  &monitor,
+                                  qp.coupling_sparsity);
     if (outcome == Outcome::converged)
       monitor.set_converged();
   }

@@ -992,6 +992,7 @@ namespace FoslsContact
                            "pattern the solver was set up for"));
     update_ghosts(x);
     qp.project_to_feasible(x);
+    monitor.enable_stall_detection();
     monitor.start(x);
     {
       const TimedScope timing(galerkin_time);

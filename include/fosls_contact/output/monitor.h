@@ -125,7 +125,7 @@ namespace FoslsContact
      * ends inside coarse faces creeps at 0.996 to 1.000 per iteration
      * with the active set settled (half disc, 3 levels; the square
      * [-1,1] x [0,1] with the gap 0.02 - 0.015 x^2, 5 levels), its
-     * estimated error 3e7 times the tolerance's target, and is found from
+     * estimated error 1e6 to 3e7 times the tolerance's target, and is found from
      * iteration 12 to 15 on. The slowest converging runs of the tests keep
      * a margin: the plain cycle creeping at 0.997 on the square with
      * contact at one end (mg_round_off_stop, 1368 iterations allowed

@@ -50,19 +50,34 @@ namespace FoslsContact
     };
 
     /**
-     * The method itself, shared by solve() and solve_quietly(): reports
-     * every step to @p monitor if there is one; the direct solver
-     * factorizes on @p factorization_pattern if given (see
-     * SparseDirectSolver::initialize()).
+     * The problem min 1/2 x^T A x - b^T x, x_i <= ub_i where role[i] is
+     * bounded; the direct solver factorizes on @p factorization_pattern
+     * if given (see SparseDirectSolver::initialize()).
      */
-    static Outcome iterate(const SparseMatrix<double> &A,
-                           const LevelVector &         b,
-                           const std::vector<DoFRole> &role,
-                           const LevelVector &         ub,
-                           LevelVector &               x,
-                           const unsigned int          max_steps,
-                           Monitor *                   monitor,
-                           const SparsityPattern *     factorization_pattern = nullptr);
+    struct Problem
+    {
+      const SparseMatrix<double> &A;
+      const LevelVector &         b;
+      const std::vector<DoFRole> &role;
+      const LevelVector &         ub;
+      const SparsityPattern *     factorization_pattern;
+    };
+
+    /**
+     * The method, shared by solve() and solve_quietly(): iterate(), and
+     * primal_active_set() from its last iterate if it cycles. Reports
+     * every step to @p monitor if there is one.
+     */
+    static Outcome run(const Problem &     problem,
+                       LevelVector &       x,
+                       const unsigned int  max_steps,
+                       Monitor *           monitor);
+
+    /** The primal-dual active set method. */
+    static Outcome iterate(const Problem &     problem,
+                           LevelVector &       x,
+                           const unsigned int  max_steps,
+                           Monitor *           monitor);
 
     /**
      * The fallback where iterate() cycles: a primal active set method
@@ -78,14 +93,10 @@ namespace FoslsContact
      * or added bound (the primal-dual method changes many at once), which
      * from the primal-dual method's last iterate are few.
      */
-    static Outcome primal_active_set(const SparseMatrix<double> &A,
-                                     const LevelVector &         b,
-                                     const std::vector<DoFRole> &role,
-                                     const LevelVector &         ub,
-                                     LevelVector &               x,
-                                     const unsigned int          max_steps,
-                                     Monitor *                   monitor,
-                                     const SparsityPattern *     factorization_pattern = nullptr);
+    static Outcome primal_active_set(const Problem &     problem,
+                                     LevelVector &       x,
+                                     const unsigned int  max_steps,
+                                     Monitor *           monitor);
   };
 } // namespace FoslsContact
 

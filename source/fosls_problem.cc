@@ -470,8 +470,20 @@ namespace FoslsContact
           << monitor->iterations() << " iterations"
           << (monitor->stopped_at_round_off() ?
                 " (corrections at their round-off floor)" :
-                "")
-          << std::endl;
+                "");
+    if (monitor->stop_reason() == "stalled")
+      pcout << ": stalled at a rate of " << std::fixed << std::setprecision(4)
+            << monitor->asymptotic_rate() << " per iteration, its error estimate "
+            << std::scientific << std::setprecision(1) << monitor->stalled_error_ratio()
+            << " times the target of "
+            << (parameters.solver.stopping == Parameters::Solver::Stopping::tolerance ?
+                  "Solver/Tolerance" :
+                  "Solver/Discretization fraction")
+            << std::defaultfloat
+            << (parameters.solver.krylov_steps == 0 ?
+                  "; the default solver (Solver/Krylov steps > 0) converges there" :
+                  "; Solver/Type = active set solves the problem exactly");
+    pcout << std::endl;
   }
 
 
@@ -507,6 +519,7 @@ namespace FoslsContact
     summary["iterations"]       = std::to_string(monitor->iterations());
     summary["converged"]        = monitor->converged() ? "true" : "false";
     summary["stopped_at_round_off"] = monitor->stopped_at_round_off() ? "true" : "false";
+    summary["stop_reason"]      = "\"" + monitor->stop_reason() + "\"";
     summary["rate_asymptotic"]  = number(monitor->asymptotic_rate());
     summary["cycles"]           = std::to_string(monitor->cycles());
     summary["rate_per_cycle"]   = number(monitor->rate_per_cycle());
@@ -661,7 +674,7 @@ namespace FoslsContact
 
 
   template <int dim>
-  bool
+  std::string
   FoslsProblem<dim>::run()
   {
     // an unusable output directory is found before the work, not after it
@@ -700,7 +713,19 @@ namespace FoslsContact
             pcout << std::endl;
           }
       }
-    return monitor->converged();
+    if (monitor->converged())
+      return "";
+    std::ostringstream why;
+    if (monitor->stop_reason() == "stalled")
+      why << "not converged: stalled at a rate of " << std::fixed << std::setprecision(4)
+          << monitor->asymptotic_rate() << " per iteration"
+          << (parameters.solver.krylov_steps == 0 ?
+                " (the default solver, Solver/Krylov steps > 0, converges there)" :
+                "");
+    else
+      why << "not converged within 'Solver/Max iterations' = "
+          << parameters.solver.max_iterations;
+    return why.str();
   }
 
   template class FoslsProblem<2>;

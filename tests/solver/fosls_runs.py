@@ -18,6 +18,7 @@ output directory in the work directory, for inspection.
 import json
 import math
 import os
+import signal
 import subprocess
 import sys
 
@@ -158,11 +159,14 @@ class Runner:
         self.exe, self.source = argv[1], argv[2]
         self.count = 0
 
-    def run(self, prm, settings=(), name=None, processes=1):
+    def run(self, prm, settings=(), name=None, processes=1, timeout=None):
         """Run @p prm (relative to the source directory) with the
         "Section/Name=value" strings @p settings, on @p processes MPI
         processes (mpirun from $MPIRUN, more processes than cores allowed);
-        the output goes to ./run_NN_<name>, without vtu files."""
+        the output goes to ./run_NN_<name>, without vtu files. A run that
+        takes longer than @p timeout seconds (a hang, e.g. a deadlock
+        between MPI processes) is killed with all its processes; its
+        returncode is then None."""
         self.count += 1
         directory = "run_%02d" % self.count + ("_" + name if name else "")
         command = command_line(self.exe, os.path.join(self.source, prm),
@@ -173,7 +177,27 @@ class Runner:
                              for c in command) + "\n")
         with open(directory + ".screen", "w") as out, \
                 open(directory + ".stderr", "w") as err:
-            returncode = subprocess.call(command, stdout=out, stderr=err)
+            # (a session of its own, so that mpirun and the processes it
+            # started can be killed together)
+            process = subprocess.Popen(command, stdout=out, stderr=err,
+                                       start_new_session=True)
+            try:
+                returncode = process.wait(timeout=timeout)
+            except subprocess.TimeoutExpired:
+                # mpirun ends its processes on SIGTERM (they are not all in
+                # its process group); whatever is left of the session then
+                # gets SIGKILL
+                process.terminate()
+                try:
+                    process.wait(timeout=10)
+                except subprocess.TimeoutExpired:
+                    pass
+                try:
+                    os.killpg(process.pid, signal.SIGKILL)
+                except ProcessLookupError:
+                    pass
+                process.wait()
+                returncode = None
         with open(directory + ".screen") as f:
             screen = f.read()
         with open(directory + ".stderr") as f:

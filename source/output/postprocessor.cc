@@ -421,9 +421,19 @@ namespace FoslsContact
                  "solution_0000",
                  "Scalars=\"von_mises\" Vectors=\"u\" Tensors=\"stress\"",
                  output);
+    // the series ParaView opens in one go: the body and, as a second part
+    // of the same step, the contact surface (a multiblock data set)
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       output.write("solution.pvd", [&](std::ostream &out) {
-        DataOutBase::write_pvd_record(out, {{0., "solution_0000.pvtu"}});
+        out << "<?xml version=\"1.0\"?>\n"
+            << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+            << "  <Collection>\n"
+            << "    <DataSet timestep=\"0\" group=\"\" part=\"0\" name=\"body\" "
+               "file=\"solution_0000.pvtu\"/>\n";
+        if (scene.has_contact())
+          out << "    <DataSet timestep=\"0\" group=\"\" part=\"1\" name=\"contact surface\" "
+                 "file=\"contact_surface_0000.pvtu\"/>\n";
+        out << "  </Collection>\n</VTKFile>\n";
       });
 
     if (scene.has_contact())

@@ -3,7 +3,8 @@
 # - the square of prm/square.prm in SI units (a 0.1 m steel square, E =
 #   210e9 Pa, nu = 0.3, pushed 1 mm, 5 levels): the pvtu names its active
 #   fields (Scalars von_mises, Vectors u, Tensors stress) and solution.pvd
-#   lists it; the points are in the scene's units (the box [0, 0.1]^2);
+#   lists it and the contact surface as two parts of one step (ParaView
+#   opens both as one multiblock data set); the points are in the scene's units (the box [0, 0.1]^2);
 #   stress is the symmetric part of sigma, von_mises and pressure are those
 #   of stress with the plane-strain stress_zz = nu (s_xx + s_yy), all to
 #   float precision; the error indicators eta_T (cell data) square-sum to
@@ -42,7 +43,10 @@ def check_fields(run, dim, nu, label):
           all('Vectors="u"' in p.header for p in pieces),
           label + ": the pvtu and its pieces name the active fields")
     with open(os.path.join(run.directory, "solution.pvd")) as f:
-        check('file="solution_0000.pvtu"' in f.read(), label + ": solution.pvd lists the pvtu")
+        pvd = f.read()
+    check('part="0" name="body" file="solution_0000.pvtu"' in pvd and
+          'part="1" name="contact surface" file="contact_surface_0000.pvtu"' in pvd,
+          label + ": solution.pvd lists the body and the contact surface as parts of one step")
     names = ["u", "sigma", "stress", "von_mises", "pressure", "div_sigma_plus_f",
              "error_indicator", "contact_status"] + (["stress_zz"] if dim == 2 else [])
     check(all(n in p.arrays for n in names for p in pieces), label + ": fields " + ", ".join(names))

@@ -133,9 +133,12 @@ namespace FoslsContact
   {
     zero_round_off(matrix, partitioner, round_off_drop);
     ghost_rows->import_into(matrix);
-    compress(matrix, sparsity);
+    // the small parts first: the memory they free takes A's new pattern
+    // (the heap keeps freed memory for reuse, Open MPI's allocator hooks
+    // return none of it to the system)
     compress(matrix_eq, sparsity_eq);
     compress(matrix_compl, sparsity_compl);
+    compress(matrix, sparsity);
   }
 
 

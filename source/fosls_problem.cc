@@ -560,16 +560,17 @@ namespace FoslsContact
     summary["energy_increases"]      = std::to_string(monitor->energy_increases());
     summary["feasibility_dampings"]  = std::to_string(monitor->feasibility_dampings());
     summary["h_ratio_coarse"]        = number(discretization->coarse_mesh_ratio());
-    if (const auto *mg = dynamic_cast<const MonotoneMultigrid<dim> *>(solver.get()))
+    const SolverStatistics statistics = solver->statistics();
+    if (const auto &mg = statistics.multilevel)
       {
         std::string colors = "[";
-        for (const unsigned int c : mg->n_patch_colors())
+        for (const unsigned int c : mg->patch_colors)
           colors += (colors.size() > 1 ? ", " : "") + std::to_string(c);
         summary["patch_colors"] = colors + "]";
         // where the cycles' time goes: visits and wall time of every level
-        // without the coarser levels it visits (MonotoneMultigrid::level_times)
+        // without the coarser levels it visits
         std::string dofs = "[", visits = "[", seconds = "[";
-        const auto  times = mg->level_times();
+        const auto &times = mg->level_times;
         for (unsigned int l = 0; l < times.size(); ++l)
           {
             const std::string separator = l ? ", " : "";
@@ -582,9 +583,8 @@ namespace FoslsContact
         summary["level_time_s"] = seconds + "]";
         if (parameters.solver.check_coarse_defects)
           {
-            const auto [checks, difference]      = mg->coarse_defect_check();
-            summary["coarse_defect_checks"]     = std::to_string(checks);
-            summary["coarse_defect_difference"] = number(difference);
+            summary["coarse_defect_checks"]     = std::to_string(mg->coarse_defect_checks);
+            summary["coarse_defect_difference"] = number(mg->coarse_defect_difference);
           }
       }
     summary["git_revision"]          = "\"" + BuildInfo::git_revision() + "\"";
@@ -614,7 +614,7 @@ namespace FoslsContact
       // output section itself is still running) and of the parts of the
       // solve
       auto times = timer.get_summary_data(TimerOutput::total_wall_time);
-      for (const auto &[name, time] : solver->section_times())
+      for (const auto &[name, time] : statistics.sections)
         times[name] = time.seconds;
       std::string sections = "{";
       for (const auto &[name, seconds] : times)
@@ -701,7 +701,7 @@ namespace FoslsContact
       {
         timer.print_summary();
         // the parts of the solve (inside the section "Solve")
-        const auto parts = solver->section_times();
+        const auto parts = solver->statistics().sections;
         if (!parts.empty())
           {
             pcout << "| Parts of the section Solve                | no. calls |  wall time |"

@@ -10,9 +10,8 @@
 
 namespace FoslsContact
 {
-  template <int dim>
   void
-  ConstrainedQP::reinit(const LevelData<dim> &level)
+  ConstrainedQP::reinit(const AlgebraicLevel &level)
   {
     matrix.reinit(level.sparsity);
     matrix_eq.reinit(level.sparsity);
@@ -25,15 +24,12 @@ namespace FoslsContact
     constant = constant_eq = 0;
     coupling_sparsity = &level.sparsity;
     role         = level.role;
-    dimension    = dim;
+    dimension    = level.dimension;
     fixed_values = level.fixed_values;
     upper_bounds = level.upper_bounds;
     update_ghosts(fixed_values);
     update_ghosts(upper_bounds);
   }
-
-  template void ConstrainedQP::reinit(const LevelData<2> &);
-  template void ConstrainedQP::reinit(const LevelData<3> &);
 
 
   namespace

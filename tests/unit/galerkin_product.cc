@@ -271,7 +271,7 @@ main(int argc, char *argv[])
           PatchSmoother smoother(1);
           smoother.initialize_level(0, A, ordered, color, n_colors, role, partitioner);
           smoother.set_obstacles(0, ub);
-          smoother.set_backward(backward);
+          smoother.set_transpose(backward);
           smoother.set_steps(2);
           LevelVector v(partitioner);
           smoother.smooth(0, v, r);

@@ -111,6 +111,14 @@ namespace FoslsContact
                 }
         }
 
+    summarize();
+  }
+
+
+  template <int dim>
+  void
+  ErrorIndicators<dim>::summarize()
+  {
     const MPI_Comm      comm = discretization.get_communicator();
     std::vector<double> owned;
     double              local_sum = 0;

@@ -207,11 +207,15 @@ namespace FoslsContact
 
 
   template <int dim>
-  std::vector<std::array<double, dim + 4>>
+  std::vector<typename ContactRow<dim>::Values>
   Postprocessor<dim>::contact_rows(const LevelVector &x) const
   {
+    using Row         = ContactRow<dim>;
     const auto &level = discretization.level(discretization.finest_level());
     update_ghosts(x);
+    // the displacement in Cartesian coordinates, at the vertices
+    LevelVector cartesian = x;
+    discretization.rotate_to_cartesian(discretization.finest_level(), cartesian);
     // sigma_nn at a vertex: mean over the contact faces that contain it
     // (all of them are here for an owned vertex)
     std::map<unsigned int, std::pair<double, unsigned int>> face_mean;
@@ -231,9 +235,7 @@ namespace FoslsContact
                   entry.second += 1;
                 }
             }
-    // the rows of the owned contact vertices: position, u_n, gap,
-    // sigma_nn, active
-    std::vector<std::array<double, dim + 4>> rows;
+    std::vector<typename Row::Values> rows;
     for (const auto &cv : level.contact_vertices)
       if (cv.owned)
         {
@@ -241,13 +243,17 @@ namespace FoslsContact
           const auto   it = face_mean.find(cv.vertex_index);
           const double snn =
             it == face_mean.end() ? 0. : it->second.first / it->second.second;
-          std::array<double, dim + 4> row;
+          const auto &          dofs = level.vertex_dofs.at(cv.vertex_index);
+          typename Row::Values row;
           for (unsigned int d = 0; d < dim; ++d)
-            row[d] = scaling.length * cv.point[d];
-          row[dim]     = scaling.length * un;
-          row[dim + 1] = scaling.length * cv.gap;
-          row[dim + 2] = scaling.stress * snn;
-          row[dim + 3] = un >= cv.gap - 1e-12 * std::max(1., std::abs(cv.gap)) ? 1 : 0;
+            {
+              row[Row::x + d] = scaling.length * cv.point[d];
+              row[Row::u + d] = scaling.length * cartesian.local_element(dofs[d]);
+            }
+          row[Row::u_n]      = scaling.length * un;
+          row[Row::gap]      = scaling.length * cv.gap;
+          row[Row::sigma_nn] = scaling.stress * snn;
+          row[Row::active]   = un >= cv.gap - 1e-12 * std::max(1., std::abs(cv.gap)) ? 1 : 0;
           rows.push_back(row);
         }
     const auto all = Utilities::MPI::gather(discretization.get_communicator(), rows, 0);
@@ -269,13 +275,13 @@ namespace FoslsContact
     std::ostringstream out;
     if (Utilities::MPI::this_mpi_process(discretization.get_communicator()) != 0)
       return out.str();
-    out << (dim == 2 ? "x,y" : "x,y,z") << ",u_n,gap,sigma_nn,active\n";
+    out << (dim == 2 ? "x,y,u_x,u_y" : "x,y,z,u_x,u_y,u_z") << ",u_n,gap,sigma_nn,active\n";
     out << std::setprecision(10);
     for (const auto &row : rows)
       {
-        for (unsigned int d = 0; d < dim + 3; ++d)
+        for (unsigned int d = 0; d < ContactRow<dim>::active; ++d)
           out << row[d] << ',';
-        out << int(row[dim + 3]) << '\n';
+        out << int(row[ContactRow<dim>::active]) << '\n';
       }
     return out.str();
   }

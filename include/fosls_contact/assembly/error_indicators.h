@@ -59,6 +59,9 @@ namespace FoslsContact
     unsigned int cells_for_half() const { return half_cells; }
 
   private:
+    /** total(), max_squared() and cells_for_half() from the parts. */
+    void summarize();
+
     const Discretization<dim> &discretization;
     const Parameters::Weights  weights;
     double                     sum = 0, largest = 0;

@@ -25,6 +25,23 @@ namespace FoslsContact
     }
   };
 
+  /**
+   * A row of the contact table (Postprocessor::contact_rows(), contact.csv):
+   * the positions of its entries.
+   */
+  template <int dim>
+  struct ContactRow
+  {
+    static constexpr unsigned int x        = 0;       ///< position (dim)
+    static constexpr unsigned int u        = dim;     ///< displacement (dim)
+    static constexpr unsigned int u_n      = 2 * dim; ///< normal displacement
+    static constexpr unsigned int gap      = 2 * dim + 1;
+    static constexpr unsigned int sigma_nn = 2 * dim + 2; ///< mean normal traction
+    static constexpr unsigned int active   = 2 * dim + 3; ///< 1 in contact, else 0
+    static constexpr unsigned int size     = 2 * dim + 4;
+    using Values                           = std::array<double, size>;
+  };
+
   /** Extremes of the fields, in the scene's units. */
   struct FieldMaxima
   {
@@ -83,11 +100,13 @@ namespace FoslsContact
 
     /**
      * One row per contact vertex of the finest level, sorted by position,
-     * in the scene's units: the position, u_n, the gap, sigma_nn (the
-     * mean over the contact faces at the vertex) and 1 if the vertex is
-     * in contact (u_n = g), else 0. On the first process; collective.
+     * in the scene's units (ContactRow): the position, the displacement,
+     * u_n, the gap, sigma_nn (the mean over the contact faces at the
+     * vertex) and 1 if the vertex is in contact (u_n = g), else 0. On the
+     * first process; collective.
      */
-    std::vector<std::array<double, dim + 4>> contact_rows(const LevelVector &x_rotated) const;
+    std::vector<typename ContactRow<dim>::Values>
+    contact_rows(const LevelVector &x_rotated) const;
 
     /** contact_rows() as CSV text (on the first process; collective). */
     std::string contact_table(const LevelVector &x_rotated) const;

@@ -148,10 +148,9 @@ namespace FoslsContact
   void
   Discretization<dim>::renumber_level(const unsigned int l)
   {
-    // Measured by hand (binaries alternated, the fastest of 3 runs, time
-    // per cycle per DoF on the square, 1 thread): level 8 0.917 -> 0.864,
-    // level 9 0.995 -> 0.919 us, levels 5 and 7 within 2.5%; session 13
-    // measured 6% on levels 8-9 with 2 threads.
+    // (the gain is in the cache: about 6-8% less time per cycle per DoF
+    // on the square's levels 8 and 9, none measurable on the small levels;
+    // bench/compare.py against p4est's numbering)
     const IndexSet &                     owned = dof_handler.locally_owned_mg_dofs(l);
     const auto                           keys  = owned_dof_keys(l);
     std::vector<types::global_dof_index> new_numbers(owned.n_elements());

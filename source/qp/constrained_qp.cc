@@ -149,15 +149,23 @@ namespace FoslsContact
 
 
     /**
+     * The rows of one block of sum_over_row_blocks(): fixed, so that the
+     * order of the sums does not depend on the threads; large enough that
+     * a block outweighs the start-up of its task.
+     */
+    constexpr types::global_dof_index rows_per_block = 512;
+
+    /**
      * Partial sums add_row(partial, i) over fixed blocks of rows, computed
      * in parallel; the caller adds them in order, so that the result does
      * not depend on the number of threads.
      */
+
     template <typename T, typename Function>
     std::vector<T>
     sum_over_row_blocks(const unsigned int n, const Function &add_row)
     {
-      const types::global_dof_index block = 512;
+      constexpr types::global_dof_index block = rows_per_block;
       std::vector<T>                partial((n + block - 1) / block, T());
       for_subranges(
         types::global_dof_index(0),

@@ -475,6 +475,8 @@ namespace FoslsContact
     void
     Solver::declare_parameters(ParameterHandler &prm)
     {
+      // the counts' defaults are the members' initial values
+      const Solver defaults;
       prm.enter_subsection("Solver");
       prm.declare_entry("Type",
                         "monotone multigrid",
@@ -493,7 +495,7 @@ namespace FoslsContact
                         "converging run), is below Tolerance times that of the "
                         "first correction (an error reduction factor).");
       prm.declare_entry("Max iterations",
-                        "200",
+                        std::to_string(defaults.max_iterations),
                         Patterns::Integer(1),
                         "Maximal number of iterations (cycles, sweeps or "
                         "active-set steps).");
@@ -511,12 +513,12 @@ namespace FoslsContact
                         Patterns::Double(0, 1),
                         "See Stopping criterion.");
       prm.declare_entry("Pre smoothing",
-                        "3",
+                        std::to_string(defaults.pre_smoothing),
                         Patterns::Integer(0, 100),
                         "Forward patch sweeps before the coarse correction (Pre and "
                         "Post smoothing must not both be 0).");
       prm.declare_entry("Post smoothing",
-                        "3",
+                        std::to_string(defaults.post_smoothing),
                         Patterns::Integer(0, 100),
                         "Backward patch sweeps after the coarse correction.");
       prm.declare_entry("Cycle",
@@ -539,7 +541,7 @@ namespace FoslsContact
                         "iteration: solve on every level in turn; expression: "
                         "Data/Initial displacement.");
       prm.declare_entry("Krylov steps",
-                        "50",
+                        std::to_string(defaults.krylov_steps),
                         Patterns::Integer(0, 1000),
                         "0: the plain monotone multigrid cycle. k > 0: truncated "
                         "nonsmooth Newton multigrid: projected pre-smoothing on "
@@ -549,7 +551,7 @@ namespace FoslsContact
                         "current inactive set, a projected line search that "
                         "never increases J, and projected post-smoothing.");
       prm.declare_entry("Threads",
-                        "0",
+                        std::to_string(defaults.threads),
                         Patterns::Integer(0, 1024),
                         "Threads per process for the patch smoother (patches of "
                         "one color are relaxed concurrently), the assembly and "
@@ -576,7 +578,7 @@ namespace FoslsContact
                         "time and, on several processes, the communication include "
                         "the check's products with the level's matrix and P~^T.");
       prm.declare_entry("Definiteness check max dofs",
-                        "20000",
+                        std::to_string(defaults.definiteness_max_dofs),
                         Patterns::Integer(0),
                         "The definiteness check (paper eq. 10, section 7) forms "
                         "the Schur complement of the functional onto the contact "

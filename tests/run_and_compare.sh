@@ -24,7 +24,7 @@
 # numdiff and python3 are taken from $NUMDIFF and $PYTHON if set (ctest
 # sets them), else from PATH.
 #
-# To regenerate an expected file after checking the new numbers by hand,
+# To regenerate an expected file after checking the new numbers,
 # copy WORKDIR/output over it (never blindly).
 set -u
 NUMDIFF=${NUMDIFF:-numdiff}

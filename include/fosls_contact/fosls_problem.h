@@ -4,16 +4,20 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
+#include <fosls_contact/assembly/error_indicators.h>
 #include <fosls_contact/discretization/discretization.h>
 #include <fosls_contact/discretization/level_transfer.h>
 #include <fosls_contact/output/monitor.h>
 #include <fosls_contact/output/output_directory.h>
+#include <fosls_contact/output/postprocessor.h>
 #include <fosls_contact/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/scene/scene.h>
 #include <fosls_contact/solvers/qp_solver.h>
 
+#include <map>
 #include <memory>
+#include <string>
 
 namespace FoslsContact
 {
@@ -58,6 +62,32 @@ namespace FoslsContact
     void setup_solver();
     void solve();
     void output_results(OutputDirectory &output);
+
+    /** summary.json's entries by name, each JSON text (Postprocessor::write()). */
+    using Summary = std::map<std::string, std::string>;
+    /**
+     * What the run cost: times, peak memory, communication (collective,
+     * first in output_results() so that the peak memory is the solve's).
+     */
+    Summary cost_summary() const;
+    /** The problem's size and how the solver did (iterations, rates, statistics). */
+    void add_solver_summary(Summary &summary) const;
+    /**
+     * The solution's figures in the scene's units: J and its parts, the
+     * contact force, the error indicators, the largest displacement and
+     * stress; returns J.
+     */
+    FunctionalValue add_solution_summary(Summary &                   summary,
+                                         const Postprocessor<dim> &  post,
+                                         const LevelVector &         cartesian,
+                                         const Tensor<1, dim> &      force,
+                                         const ErrorIndicators<dim> &indicators) const;
+    /** The comparison with Hertz's contact pressure, for a scene that declares one. */
+    void add_hertz_comparison(Summary &                 summary,
+                              const Postprocessor<dim> &post,
+                              const Tensor<1, dim> &    force) const;
+    /** The errors against the scene's exact solution; refuses non-finite ones. */
+    void add_errors(Summary &summary, const Postprocessor<dim> &post, const LevelVector &cartesian) const;
 
     /**
      * A solver for @p level_qp, the problem assembled on level @p level.

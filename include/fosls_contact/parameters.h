@@ -188,12 +188,12 @@ namespace FoslsContact
       Projection   projection          = Projection::b;
       InitialGuess initial_guess       = InitialGuess::coarse_solution;
       unsigned int definiteness_max_dofs = 20000;
-      unsigned int krylov_steps          = 10;
+      unsigned int krylov_steps          = 50;
       /** 0: as many threads as cores (or DEAL_II_NUM_THREADS). */
       unsigned int threads               = 0;
       /**
        * A diagnostic: recompute the coarse defects a W- or F-cycle's
-       * second visit takes from the first (MonotoneMultigrid::cycle()) and
+       * second visit takes from the first (MonotoneCycle) and
        * report the largest difference.
        */
       bool         check_coarse_defects  = false;

@@ -66,7 +66,7 @@ namespace FoslsContact
     const double norm = w.norm();
     for (unsigned int i = 0; i < dim; ++i)
       H(i, i) = 1.;
-    if (norm < 1e-12)
+    if (norm < householder_tolerance)
       return H;
     w /= norm;
     for (unsigned int i = 0; i < dim; ++i)
@@ -148,10 +148,9 @@ namespace FoslsContact
   void
   Discretization<dim>::renumber_level(const unsigned int l)
   {
-    // Measured by hand (binaries alternated, the fastest of 3 runs, time
-    // per cycle per DoF on the square, 1 thread): level 8 0.917 -> 0.864,
-    // level 9 0.995 -> 0.919 us, levels 5 and 7 within 2.5%; session 13
-    // measured 6% on levels 8-9 with 2 threads.
+    // (the gain is in the cache: about 6-8% less time per cycle per DoF
+    // on the square's levels 8 and 9, none measurable on the small levels;
+    // bench/compare.py against p4est's numbering)
     const IndexSet &                     owned = dof_handler.locally_owned_mg_dofs(l);
     const auto                           keys  = owned_dof_keys(l);
     std::vector<types::global_dof_index> new_numbers(owned.n_elements());
@@ -189,15 +188,45 @@ namespace FoslsContact
   void
   Discretization<dim>::setup_level(const unsigned int l)
   {
+    map_level_dofs(l);
+    const BoundaryData boundary = apply_boundary_faces(l);
+    set_contact_vertices(l, boundary);
+    // The owner decides: a ghost vertex on the edge of the ghost layer may
+    // miss a Dirichlet face of a cell that is not here.
+    LevelData<dim> &data = levels[l];
+    exchange_ghosts(data.partitioner, data.role);
+    update_ghosts(data.fixed_values);
+    update_ghosts(data.upper_bounds);
+    add_rotations(l, boundary);
+    set_coupling_pattern(l);
+  }
+
+
+  template <int dim>
+  template <typename Iterator>
+  void
+  Discretization<dim>::get_local_dofs(const unsigned int                    l,
+                                      const Iterator &                      cell,
+                                      std::vector<types::global_dof_index> &dofs) const
+  {
+    dofs.resize(fe.n_dofs_per_cell());
+    cell->get_mg_dof_indices(dofs);
+    for (auto &dof : dofs)
+      dof = levels[l].partitioner->global_to_local(dof);
+  }
+
+
+  template <int dim>
+  void
+  Discretization<dim>::map_level_dofs(const unsigned int l)
+  {
     LevelData<dim> &data = levels[l];
     data.n_dofs          = dof_handler.n_dofs(l);
     data.partitioner     = std::make_shared<const Utilities::MPI::Partitioner>(
       dof_handler.locally_owned_mg_dofs(l),
       DoFTools::extract_locally_relevant_level_dofs(dof_handler, l),
       get_communicator());
-    const auto &       partitioner = *data.partitioner;
-    const unsigned int n_local     = data.n_local();
-    const unsigned int n_owned     = data.n_owned();
+    const unsigned int n_local = data.n_local();
     data.role.assign(n_local, DoFRole::free);
     data.fixed_values.reinit(data.partitioner);
     data.upper_bounds.reinit(data.partitioner);
@@ -207,16 +236,11 @@ namespace FoslsContact
     // Which DoF is which: the base element (0 = Q1^d, 1 = RT0^d), its copy
     // (displacement component or stress row) and the vertex or face, for
     // the cells with DoFs here (owned and ghost).
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    auto local_dofs = [&](const auto &cell) {
-      cell->get_mg_dof_indices(dofs);
-      for (auto &dof : dofs)
-        dof = partitioner.global_to_local(dof);
-    };
+    std::vector<types::global_dof_index> dofs;
     for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
       if (is_present(cell))
         {
-          local_dofs(cell);
+          get_local_dofs(l, cell, dofs);
           for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
             {
               const auto base = fe.system_to_base_index(i);
@@ -228,29 +252,23 @@ namespace FoslsContact
                               [base.first.second] = dofs[i];
             }
         }
+  }
 
-    const QGauss<dim - 1>   face_quadrature(3);
-    FEFaceValues<dim>       fe_face(mapping,
+
+  template <int dim>
+  typename Discretization<dim>::BoundaryData
+  Discretization<dim>::apply_boundary_faces(const unsigned int l)
+  {
+    LevelData<dim> &      data = levels[l];
+    BoundaryData          boundary;
+    const QGauss<dim - 1> face_quadrature(3);
+    FEFaceValues<dim>     fe_face(mapping,
                               fe,
                               face_quadrature,
                               update_values | update_normal_vectors |
                                 update_quadrature_points | update_JxW_values);
-    // Dirichlet vertices with the components prescribed there (the union
-    // over their Dirichlet faces: a corner of a clamped and a roller side is
-    // clamped)
-    std::map<unsigned int, std::array<bool, dim>> dirichlet_vertices;
-    std::map<unsigned int, Point<dim>>         contact_vertex_points;
-    Vector<double>                             values(dim);
-    struct FaceRotation
-    {
-      unsigned int                            face_index;
-      std::array<types::global_dof_index, dim> dofs;
-      Point<dim>                              center;
-      Tensor<1, dim>                          normal;
-      double                                  area, c;
-    };
-    std::vector<FaceRotation> contact_face_data;
-
+    Vector<double>                       values(dim);
+    std::vector<types::global_dof_index> dofs;
     for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
       if (is_present(cell))
         for (const unsigned int f : cell->face_indices())
@@ -265,12 +283,9 @@ namespace FoslsContact
             // times the outward normal, at the face quadrature points.
             fe_face.reinit(cell, f);
             std::array<unsigned int, dim> local_rt;
-            {
-              local_dofs(cell);
-              for (unsigned int m = 0; m < dim; ++m)
-                local_rt[m] =
-                  std::find(dofs.begin(), dofs.end(), face_rt[m]) - dofs.begin();
-            }
+            get_local_dofs(l, cell, dofs);
+            for (unsigned int m = 0; m < dim; ++m)
+              local_rt[m] = std::find(dofs.begin(), dofs.end(), face_rt[m]) - dofs.begin();
             auto normal_component = [&](const unsigned int m, const unsigned int q) {
               const FEValuesExtractors::Vector row(dim + m * dim);
               return fe_face[row].value(local_rt[m], q) * fe_face.normal_vector(q);
@@ -287,7 +302,7 @@ namespace FoslsContact
                          phi_n * fe_face.JxW(q);
                   den += phi_n * phi_n * fe_face.JxW(q);
                 }
-              data.role[face_rt[m]]                     = DoFRole::fixed;
+              data.role[face_rt[m]]                       = DoFRole::fixed;
               data.fixed_values.local_element(face_rt[m]) = num / den;
             };
 
@@ -297,7 +312,7 @@ namespace FoslsContact
                 for (const unsigned int v : face->vertex_indices())
                   {
                     const unsigned int vi = face->vertex_index(v);
-                    auto &vertex_mask = dirichlet_vertices.try_emplace(vi).first->second;
+                    auto &vertex_mask = boundary.dirichlet_vertices.try_emplace(vi).first->second;
                     scene.dirichlet_values().vector_value(face->vertex(v), values);
                     for (unsigned int k = 0; k < dim; ++k)
                       if (mask[k])
@@ -320,53 +335,68 @@ namespace FoslsContact
             else if (scene.is_contact(id))
               {
                 for (const unsigned int v : face->vertex_indices())
-                  contact_vertex_points[face->vertex_index(v)] = face->vertex(v);
-
-                // Q_phi = H_phi / c with c the mean normal component of the
-                // face's basis function (+-1/|face|): then the first rotated
-                // coordinate is the mean normal traction (sigma n).n on the
-                // face, whatever the sign of the RT orientation.
+                  boundary.contact_vertex_points[face->vertex_index(v)] = face->vertex(v);
+                // the mean normal component of the face's basis function
                 double area = 0, c = 0;
                 for (unsigned int q = 0; q < face_quadrature.size(); ++q)
                   {
                     area += fe_face.JxW(q);
                     c += normal_component(0, q) * fe_face.JxW(q);
                   }
-                c /= area;
-                for (unsigned int m = 0; m < dim; ++m)
-                  {
-                    data.role[face_rt[m]]                       = DoFRole::fixed; // tangential
-                    data.fixed_values.local_element(face_rt[m]) = 0;
-                  }
-                data.role[face_rt[0]]                       = DoFRole::bounded;
-                data.upper_bounds.local_element(face_rt[0]) = 0.;
-                contact_face_data.push_back({static_cast<unsigned int>(face->index()),
-                                             face_rt,
-                                             face->center(),
-                                             scene.obstacle_normal(face->center()),
-                                             area,
-                                             c});
+                bound_contact_face(data, face_rt);
+                boundary.contact_faces.push_back({static_cast<unsigned int>(face->index()),
+                                                  face_rt,
+                                                  face->center(),
+                                                  scene.obstacle_normal(face->center()),
+                                                  area,
+                                                  c / area});
               }
           }
+    return boundary;
+  }
 
+
+  template <int dim>
+  void
+  Discretization<dim>::bound_contact_face(LevelData<dim> &                                data,
+                                          const std::array<types::global_dof_index, dim> &face_rt)
+  {
+    // the tangential tractions are 0, the normal one (the first rotated
+    // coordinate, see add_rotations()) is bounded by 0
+    for (unsigned int m = 0; m < dim; ++m)
+      {
+        data.role[face_rt[m]]                       = DoFRole::fixed;
+        data.fixed_values.local_element(face_rt[m]) = 0;
+      }
+    data.role[face_rt[0]]                       = DoFRole::bounded;
+    data.upper_bounds.local_element(face_rt[0]) = 0.;
+  }
+
+
+  template <int dim>
+  void
+  Discretization<dim>::set_contact_vertices(const unsigned int l, const BoundaryData &boundary)
+  {
     // Contact vertices: those of contact faces that are not Dirichlet
     // vertices. At a vertex of both, the prescribed displacement wins; it
     // must not be prescribed into the obstacle, where u.n <= g cannot hold
-    // (found by probing: a corner of the square with Dirichlet value
-    // u_y = -0.01 and gap -0.02 kept a penetration of 0.03, silently).
-    // A roller vertex (u.n not prescribed) stays a contact vertex if n is
-    // orthogonal to its prescribed components: vertex_rotation(n) then has
-    // +-e_k as a column for each of them, so u_k is one rotated coordinate,
-    // fixed, beside the bounded u.n. Any other roller vertex is refused: a
-    // box constraint cannot hold u.n <= g and a Cartesian component
-    // together.
-    double      penetration = 0;
-    std::string unsupported;
-    for (const auto &[vi, p] : contact_vertex_points)
+    // (a corner of the square with Dirichlet value u_y = -0.01 and gap
+    // -0.02 would keep a penetration of 0.03, silently). A roller vertex
+    // (u.n not prescribed) stays a contact vertex if n is orthogonal to its
+    // prescribed components: vertex_rotation(n) then has +-e_k as a column
+    // for each of them, so u_k is one rotated coordinate, fixed, beside the
+    // bounded u.n (roller_contact_vertex()). Any other roller vertex is
+    // refused: a box constraint cannot hold u.n <= g and a Cartesian
+    // component together.
+    LevelData<dim> &data        = levels[l];
+    double          penetration = 0;
+    std::string     unsupported;
+    Vector<double>  values(dim);
+    for (const auto &[vi, p] : boundary.contact_vertex_points)
       {
         const auto dofs = data.vertex_dofs.at(vi);
-        const auto d    = dirichlet_vertices.find(vi);
-        if (d == dirichlet_vertices.end())
+        const auto d    = boundary.dirichlet_vertices.find(vi);
+        if (d == boundary.dirichlet_vertices.end())
           {
             data.role[dofs[0]]                       = DoFRole::bounded;
             data.upper_bounds.local_element(dofs[0]) = scene.gap().value(p);
@@ -377,12 +407,10 @@ namespace FoslsContact
         const double         gap  = scene.gap().value(p);
         scene.dirichlet_values().vector_value(p, values);
         bool   prescribed = true; // u.n: n has no part along a free component
-        bool   orthogonal = true; // n has no part along a prescribed one
         double normal_u   = 0;
         for (unsigned int k = 0; k < dim; ++k)
           {
             prescribed = prescribed && (mask[k] || n[k] == 0.);
-            orthogonal = orthogonal && (!mask[k] || n[k] == 0.);
             if (mask[k])
               normal_u += values[k] * n[k];
           }
@@ -390,40 +418,65 @@ namespace FoslsContact
           {
             // (relative to 1 too: sin(pi) = 1.2e-16 against a gap of 0
             // must pass)
-            if (normal_u - gap > 1e-12 * (1. + std::abs(normal_u) + std::abs(gap)))
+            if (normal_u - gap >
+                penetration_round_off * (1. + std::abs(normal_u) + std::abs(gap)))
               penetration = std::max(penetration, normal_u - gap);
             continue;
           }
-        // rotated coordinate i: free, or u_k = R(k, i) x_i fixed
-        const FullMatrix<double> R = vertex_rotation(n);
-        std::array<bool, dim>    fixed{};
-        for (unsigned int i = 0; i < dim; ++i)
-          data.fixed_values.local_element(dofs[i]) = 0.;
-        for (unsigned int k = 0; k < dim && orthogonal; ++k)
-          if (mask[k])
-            {
-              unsigned int i = 1;
-              while (i < dim && std::abs(std::abs(R(k, i)) - 1.) > 1e-14)
-                ++i;
-              orthogonal = (i < dim);
-              if (orthogonal)
-                {
-                  fixed[i]                                 = true;
-                  data.fixed_values.local_element(dofs[i]) = R(k, i) * values[k];
-                }
-            }
-        if (!orthogonal)
+        if (!roller_contact_vertex(data, dofs, mask, n, gap, values))
           {
             std::ostringstream where;
             where << p;
             unsupported = where.str();
-            continue;
           }
-        for (unsigned int i = 1; i < dim; ++i)
-          data.role[dofs[i]] = fixed[i] ? DoFRole::fixed : DoFRole::free;
-        data.role[dofs[0]]                       = DoFRole::bounded;
-        data.upper_bounds.local_element(dofs[0]) = gap;
       }
+    check_contact_vertices(data, unsupported, penetration);
+  }
+
+
+  template <int dim>
+  bool
+  Discretization<dim>::roller_contact_vertex(LevelData<dim> &                                data,
+                                             const std::array<types::global_dof_index, dim> &dofs,
+                                             const std::array<bool, dim> &                   mask,
+                                             const Tensor<1, dim> &                          n,
+                                             const double                                    gap,
+                                             const Vector<double> &values) const
+  {
+    // n has no part along a prescribed component
+    for (unsigned int k = 0; k < dim; ++k)
+      if (mask[k] && n[k] != 0.)
+        return false;
+    // rotated coordinate i: free, or u_k = R(k, i) x_i fixed
+    const FullMatrix<double> R = vertex_rotation(n);
+    std::array<bool, dim>    fixed{};
+    for (unsigned int i = 0; i < dim; ++i)
+      data.fixed_values.local_element(dofs[i]) = 0.;
+    for (unsigned int k = 0; k < dim; ++k)
+      if (mask[k])
+        {
+          unsigned int i = 1;
+          while (i < dim && std::abs(std::abs(R(k, i)) - 1.) > 1e-14)
+            ++i;
+          if (i == dim)
+            return false;
+          fixed[i]                                 = true;
+          data.fixed_values.local_element(dofs[i]) = R(k, i) * values[k];
+        }
+    for (unsigned int i = 1; i < dim; ++i)
+      data.role[dofs[i]] = fixed[i] ? DoFRole::fixed : DoFRole::free;
+    data.role[dofs[0]]                       = DoFRole::bounded;
+    data.upper_bounds.local_element(dofs[0]) = gap;
+    return true;
+  }
+
+
+  template <int dim>
+  void
+  Discretization<dim>::check_contact_vertices(const LevelData<dim> &data,
+                                              std::string           unsupported,
+                                              double                penetration) const
+  {
     // (the first such vertex of any process: the message is printed by
     // process 0)
     for (const auto &where :
@@ -446,15 +499,21 @@ namespace FoslsContact
                 << "hold there";
         AssertThrow(false, ExcMessage(message.str()));
       }
+  }
 
-    // The owner decides: a ghost vertex on the edge of the ghost layer may
-    // miss a Dirichlet face of a cell that is not here.
-    exchange_ghosts(data.partitioner, data.role);
-    update_ghosts(data.fixed_values);
-    update_ghosts(data.upper_bounds);
 
+  template <int dim>
+  void
+  Discretization<dim>::add_rotations(const unsigned int l, const BoundaryData &boundary)
+  {
     // The rotations (paper section 4.3) of the contact faces and vertices.
-    for (const auto &face : contact_face_data)
+    // A face: Q_phi = H_phi / c with c the mean normal component of the
+    // face's basis function (+-1/|face|): then the first rotated coordinate
+    // is the mean normal traction (sigma n).n on the face, whatever the
+    // sign of the RT orientation.
+    LevelData<dim> &   data    = levels[l];
+    const unsigned int n_owned = data.n_owned();
+    for (const auto &face : boundary.contact_faces)
       {
         RotationBlock<dim> block;
         block.dofs    = face.dofs;
@@ -496,11 +555,20 @@ namespace FoslsContact
                                          data.upper_bounds.local_element(vertex[0]),
                                          vertex[0] < n_owned});
       }
+  }
 
+
+  template <int dim>
+  void
+  Discretization<dim>::set_coupling_pattern(const unsigned int l)
+  {
     // The rows held here: the owned DoFs, and the DoFs of the patches at
     // the vertices of owned cells (the vertex's displacement, the faces at
     // it), whose cells are all here.
-    std::vector<bool> held(n_local, false);
+    LevelData<dim> &   data    = levels[l];
+    const unsigned int n_local = data.n_local();
+    const unsigned int n_owned = data.n_owned();
+    std::vector<bool>  held(n_local, false);
     for (unsigned int i = 0; i < n_owned; ++i)
       held[i] = true;
     for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
@@ -513,11 +581,12 @@ namespace FoslsContact
           if (data.owned_cell_vertices.count(cell->vertex_index(v)))
             for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) { held[dof] = true; });
     {
-      DynamicSparsityPattern dsp(n_local, n_local);
+      std::vector<types::global_dof_index> dofs;
+      DynamicSparsityPattern               dsp(n_local, n_local);
       for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
         if (is_present(cell))
           {
-            local_dofs(cell);
+            get_local_dofs(l, cell, dofs);
             for (const auto i : dofs)
               if (held[i])
                 for (const auto j : dofs)

@@ -88,7 +88,8 @@ namespace FoslsContact
       }
     pressure_error = norm > 0 ? std::sqrt(difference / norm) : 0.;
     // (a peak on the contact point itself, up to round-off)
-    if (peak_r < 1e-12 * R)
+    constexpr double round_off = 1e-12;
+    if (peak_r < round_off * R)
       peak_r = 0;
   }
 

@@ -46,114 +46,29 @@ namespace FoslsContact
   bool
   Monitor::report(const LevelVector &x, const LevelVector &x_old)
   {
-    LevelVector d(x);
-    d -= x_old;
-    IterationRecord r;
-    r.iteration    = history.size();
-    r.functional   = qp.parts(x);
-    r.correction   = qp.energy_norm(d);
-    std::vector<bool> active = qp.active_set(x);
-    r.active       = qp.n_active(active);
-    r.violation    = qp.max_violation(x);
-    r.wall_seconds = timer.wall_time();
-    const double previous = history.back().correction;
-    r.rate = (history.size() > 1 && previous > 0) ? r.correction / previous : 0.;
-
-    // Iterates never silently become NaN: stop the run with a message.
-    AssertThrow(std::isfinite(r.functional.total) && std::isfinite(r.correction),
-                ExcMessage(solver_name + ": the iterate became NaN/Inf at "
-                           "iteration " + std::to_string(r.iteration) +
-                           " (the data are finite, checked at the start: the functional "
-                           "is likely too badly conditioned for double precision with "
-                           "these 'Functional weights')"));
-    history.push_back(r);
-    // (the active set changed if it changed on any process)
-    if (Utilities::MPI::max(active != active_set ? 1u : 0u, qp.get_communicator()) == 1)
-      {
-        active_set_changed_at = r.iteration;
-        active_set.swap(active);
-      }
-    if (history.size() == 2)
-      cycles_after_first = n_cycles;
-
+    const IterationRecord &r = record(x, x_old);
     // The solution of a least-squares problem has a small energy (J(x*)
     // is the discretization error), so corrections are measured relative
     // to the first one: the criterion is an error reduction factor.
-    const double first  = history.size() > 1 ? history[1].correction : 0.;
-    const double norm_x = std::max(first, 1e-300);
-    // Round-off floor: a correction within a factor 10 of the round-off
-    // level of the corrections at x (ConstrainedQP::round_off_correction)
-    // carries no information about the error, whatever the tolerance asks
-    // for. This also ends a run whose start is already exact (its first
-    // correction is round-off).
-    //
-    // Both this and the tolerance below take the rate into account: at a
-    // rate rho the error is about rho/(1-rho) times the correction, so
-    // where rho > 1/2 that multiple of the correction is compared (rho:
-    // the larger of the last two rates, so that one lucky step does not
-    // end a slow run). A rate of 1 or more near the floor is its noise. A
-    // plain W-cycle creeping at 0.992 (the square with contact at one end,
-    // gap 0.02 (1 - x), 6 levels, zero start, Krylov steps = 0) otherwise
-    // stopped as converged after 1376 iterations by the tolerance (the
-    // force 3.4e-5 off the active set solver's) and, with that fixed,
-    // after 1473 by the stagnation check below (1.6e-5 off); now after
-    // 2010 iterations, 2.8e-7 off (session 17, found by a probe).
+    const double norm_x = std::max(history[1].correction, 1e-300);
+    // Both the round-off floor and the tolerance take the rate into
+    // account: at a rate rho the error is about rho/(1-rho) times the
+    // correction, so where rho > 1/2 that multiple of the correction is
+    // compared (rho: the larger of the last two rates, so that one lucky
+    // step does not end a slow run). A plain W-cycle creeping at 0.992
+    // (the square with contact at one end, gap 0.02 (1 - x), 6 levels,
+    // zero start, Krylov steps = 0) stops after 2010 iterations, the force
+    // 2.8e-7 off the active set solver's; comparing the correction alone
+    // stopped it after 1376 iterations, 3.4e-5 off.
     // (history[0] is the start, whose rate is 0)
     const double rho    = std::max(r.rate, history[history.size() - 2].rate);
     const double factor = rho < 1. ? std::max(1., rho / (1. - rho)) :
                                      std::numeric_limits<double>::infinity();
-    const double floor = qp.round_off_correction(x);
-    history.back().round_off = floor;
-    bool         stop  = r.correction <= 10. * floor &&
-                (rho >= 1. || r.correction * factor <= 10. * floor);
-    // Should the estimate be low for some mesh, the corrections stagnate
-    // above it: four iterations in a row without a new smallest correction,
-    // all within 1000 times the estimate, is the floor as well. (A slow
-    // steady decrease must not be taken for it: one of the four must have
-    // gone up, rate >= 1. Without that condition the creep at 0.992 above
-    // stopped here.)
-    if (!stop && history.size() > 8)
-      {
-        double smallest_before = std::numeric_limits<double>::max();
-        for (unsigned int k = 1; k + 4 < history.size(); ++k)
-          smallest_before = std::min(smallest_before, history[k].correction);
-        bool stagnating = true, went_up = false;
-        for (unsigned int k = history.size() - 4; stagnating && k < history.size(); ++k)
-          {
-            stagnating = history[k].correction >= 0.5 * smallest_before &&
-                         history[k].correction <= 1000. * floor;
-            went_up |= history[k].rate >= 1.;
-          }
-        stagnating &= went_up;
-        stop            = stagnating;
-        floor_stagnated = stagnating;
-      }
-    at_floor = stop;
+    bool stop = at_round_off_floor(x, rho, factor);
     if (parameters.stopping == Parameters::Solver::Stopping::tolerance)
       stop |= r.correction * factor <= parameters.tolerance * norm_x;
     else
-      {
-        // J(x) - J(x*) = 1/2 |x - x*|_A^2 (on the final active set) and the
-        // algebraic error is about |d|_A rho/(1-rho); J(x) itself estimates
-        // the squared discretization error. The estimate holds only in the
-        // linear phase (paper section 7, phase III): the active set must not
-        // have changed in the last iteration, and rho is the largest rate
-        // since it last changed. (Measured on the half disc, 4 levels: with
-        // the mean rate of the nonlinear phase the run stopped after 2
-        // iterations at 10 times the converged J.)
-        // (rho is not capped below 1: with a cap of 0.95 a method slower
-        // than that would stop too early; projected Gauss-Seidel, whose
-        // rate is not steady, is refused this criterion, see
-        // Parameters::Solver)
-        double rho = 0.;
-        for (unsigned int k = active_set_changed_at + 1; k < history.size(); ++k)
-          rho = std::max(rho, history[k].rate);
-        rho = std::max(rho, 0.05);
-        const double algebraic = r.correction * rho / (1. - rho) / std::sqrt(2.);
-        stop |= history.size() > 2 && active_set_changed_at < r.iteration && rho < 1. &&
-                algebraic <= parameters.discretization_fraction *
-                               std::sqrt(std::max(r.functional.total, 0.));
-      }
+      stop |= at_discretization_accuracy();
     has_converged = stop;
     reason        = !stop                                                             ? "" :
                     at_floor                                                          ? "round-off floor" :
@@ -184,6 +99,107 @@ namespace FoslsContact
           << std::setprecision(3) << r.rate << "  active = " << r.active
           << std::endl;
     return stop || out_of_iterations;
+  }
+
+
+  const IterationRecord &
+  Monitor::record(const LevelVector &x, const LevelVector &x_old)
+  {
+    LevelVector d(x);
+    d -= x_old;
+    IterationRecord r;
+    r.iteration    = history.size();
+    r.functional   = qp.parts(x);
+    r.correction   = qp.energy_norm(d);
+    std::vector<bool> active = qp.active_set(x);
+    r.active       = qp.n_active(active);
+    r.violation    = qp.max_violation(x);
+    r.wall_seconds = timer.wall_time();
+    const double previous = history.back().correction;
+    r.rate = (history.size() > 1 && previous > 0) ? r.correction / previous : 0.;
+
+    // Iterates never silently become NaN: stop the run with a message.
+    AssertThrow(std::isfinite(r.functional.total) && std::isfinite(r.correction),
+                ExcMessage(solver_name + ": the iterate became NaN/Inf at "
+                           "iteration " + std::to_string(r.iteration) +
+                           " (the data are finite, checked at the start: the functional "
+                           "is likely too badly conditioned for double precision with "
+                           "these 'Functional weights')"));
+    history.push_back(r);
+    // (the active set changed if it changed on any process)
+    if (Utilities::MPI::max(active != active_set ? 1u : 0u, qp.get_communicator()) == 1)
+      {
+        active_set_changed_at = r.iteration;
+        active_set.swap(active);
+      }
+    if (history.size() == 2)
+      cycles_after_first = n_cycles;
+    return history.back();
+  }
+
+
+  bool
+  Monitor::at_round_off_floor(const LevelVector &x, const double rho, const double factor)
+  {
+    // A correction within a factor 10 of the round-off level of the
+    // corrections at x (ConstrainedQP::round_off_correction) carries no
+    // information about the error, whatever the tolerance asks for. This
+    // also ends a run whose start is already exact (its first correction
+    // is round-off). A rate of 1 or more near the floor is its noise.
+    IterationRecord &r     = history.back();
+    const double     floor = qp.round_off_correction(x);
+    r.round_off            = floor;
+    bool stop = r.correction <= 10. * floor && (rho >= 1. || r.correction * factor <= 10. * floor);
+    // Should the estimate be low for some mesh, the corrections stagnate
+    // above it: four iterations in a row without a new smallest correction,
+    // all within 1000 times the estimate, is the floor as well. (A slow
+    // steady decrease must not be taken for it: one of the four must have
+    // gone up, rate >= 1. Without that condition the creep at 0.992 above
+    // stopped here after 1473 iterations, the force 1.6e-5 off.)
+    if (!stop && history.size() > 8)
+      {
+        double smallest_before = std::numeric_limits<double>::max();
+        for (unsigned int k = 1; k + 4 < history.size(); ++k)
+          smallest_before = std::min(smallest_before, history[k].correction);
+        bool stagnating = true, went_up = false;
+        for (unsigned int k = history.size() - 4; stagnating && k < history.size(); ++k)
+          {
+            stagnating = history[k].correction >= 0.5 * smallest_before &&
+                         history[k].correction <= 1000. * floor;
+            went_up |= history[k].rate >= 1.;
+          }
+        stagnating &= went_up;
+        stop            = stagnating;
+        floor_stagnated = stagnating;
+      }
+    at_floor = stop;
+    return stop;
+  }
+
+
+  bool
+  Monitor::at_discretization_accuracy() const
+  {
+    // J(x) - J(x*) = 1/2 |x - x*|_A^2 (on the final active set) and the
+    // algebraic error is about |d|_A rho/(1-rho); J(x) itself estimates the
+    // squared discretization error. The estimate holds only in the linear
+    // phase (paper section 7, phase III): the active set must not have
+    // changed in the last iteration, and rho is the largest rate since it
+    // last changed. (On the half disc with 4 levels, with the mean rate of
+    // the nonlinear phase the run stopped after 2 iterations at 10 times
+    // the converged J.) (rho is not capped below 1: with a cap of 0.95 a
+    // method slower than that would stop too early; projected Gauss-Seidel,
+    // whose rate is not steady, is refused this criterion, see
+    // Parameters::Solver)
+    const IterationRecord &r   = history.back();
+    double                 rho = 0.;
+    for (unsigned int k = active_set_changed_at + 1; k < history.size(); ++k)
+      rho = std::max(rho, history[k].rate);
+    rho                    = std::max(rho, 0.05);
+    const double algebraic = r.correction * rho / (1. - rho) / std::sqrt(2.);
+    return history.size() > 2 && active_set_changed_at < r.iteration && rho < 1. &&
+           algebraic <=
+             parameters.discretization_fraction * std::sqrt(std::max(r.functional.total, 0.));
   }
 
 

@@ -17,6 +17,21 @@
 
 namespace FoslsContact
 {
+  namespace
+  {
+    /**
+     * Whether a contact vertex with normal displacement @p u_n is in
+     * contact with the obstacle at gap @p gap: the solvers leave an active
+     * DoF at its bound up to round-off, relative to the gap and to 1 (a
+     * gap of 0).
+     */
+    bool
+    in_contact(const double u_n, const double gap)
+    {
+      constexpr double round_off = 1e-12;
+      return u_n >= gap - round_off * std::max(1., std::abs(gap));
+    }
+  } // namespace
 
 
   template <int dim>
@@ -253,7 +268,7 @@ namespace FoslsContact
           row[Row::u_n]      = scaling.length * un;
           row[Row::gap]      = scaling.length * cv.gap;
           row[Row::sigma_nn] = scaling.stress * snn;
-          row[Row::active]   = un >= cv.gap - 1e-12 * std::max(1., std::abs(cv.gap)) ? 1 : 0;
+          row[Row::active]   = in_contact(un, cv.gap) ? 1 : 0;
           rows.push_back(row);
         }
     const auto all = Utilities::MPI::gather(discretization.get_communicator(), rows, 0);
@@ -394,8 +409,7 @@ namespace FoslsContact
       std::map<unsigned int, bool> active_vertex;
       // (x's ghost values: from contact_table() before)
       for (const auto &cv : level.contact_vertices)
-        active_vertex[cv.vertex_index] =
-          x.local_element(cv.normal_dof) >= cv.gap - 1e-12 * std::max(1., std::abs(cv.gap));
+        active_vertex[cv.vertex_index] = in_contact(x.local_element(cv.normal_dof), cv.gap);
       for (const auto &cell : tria.active_cell_iterators())
         if (cell->is_locally_owned())
           for (const unsigned int v : cell->vertex_indices())

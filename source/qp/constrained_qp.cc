@@ -10,9 +10,8 @@
 
 namespace FoslsContact
 {
-  template <int dim>
   void
-  ConstrainedQP::reinit(const LevelData<dim> &level)
+  ConstrainedQP::reinit(const AlgebraicLevel &level)
   {
     matrix.reinit(level.sparsity);
     matrix_eq.reinit(level.sparsity);
@@ -25,15 +24,12 @@ namespace FoslsContact
     constant = constant_eq = 0;
     coupling_sparsity = &level.sparsity;
     role         = level.role;
-    dimension    = dim;
+    dimension    = level.dimension;
     fixed_values = level.fixed_values;
     upper_bounds = level.upper_bounds;
     update_ghosts(fixed_values);
     update_ghosts(upper_bounds);
   }
-
-  template void ConstrainedQP::reinit(const LevelData<2> &);
-  template void ConstrainedQP::reinit(const LevelData<3> &);
 
 
   namespace
@@ -180,15 +176,23 @@ namespace FoslsContact
 
 
     /**
+     * The rows of one block of sum_over_row_blocks(): fixed, so that the
+     * order of the sums does not depend on the threads; large enough that
+     * a block outweighs the start-up of its task.
+     */
+    constexpr types::global_dof_index rows_per_block = 512;
+
+    /**
      * Partial sums add_row(partial, i) over fixed blocks of rows, computed
      * in parallel; the caller adds them in order, so that the result does
      * not depend on the number of threads.
      */
+
     template <typename T, typename Function>
     std::vector<T>
     sum_over_row_blocks(const unsigned int n, const Function &add_row)
     {
-      const types::global_dof_index block = 512;
+      constexpr types::global_dof_index block = rows_per_block;
       std::vector<T>                partial((n + block - 1) / block, T());
       for_subranges(
         types::global_dof_index(0),

@@ -123,12 +123,14 @@ namespace FoslsContact
     Vector<double>     m_values;
     FullMatrix<double> m_vectors;
     symmetric_eigenpairs(M, m_values, m_vectors);
-    double largest = 0;
+    // the modes the matrix moves: eigenvalues above its round-off
+    constexpr double relative_round_off = 1e-12;
+    double           largest            = 0;
     for (unsigned int a = 0; a < m_values.size(); ++a)
       largest = std::max(largest, m_values[a]);
     std::vector<unsigned int> range;
     for (unsigned int a = 0; a < m_values.size(); ++a)
-      if (m_values[a] > 1e-12 * largest)
+      if (m_values[a] > relative_round_off * largest)
         range.push_back(a);
     coefficients.reinit(k);
     if (range.empty())

@@ -87,6 +87,17 @@ namespace FoslsContact
   }
 
 
+  namespace
+  {
+    /**
+     * Below this many rows (the coarse levels) a product is computed on
+     * the calling thread: the start-up of deal.II's threaded vmult()
+     * outweighs the work.
+     */
+    constexpr unsigned int min_rows_for_threads = 512;
+  } // namespace
+
+
   void
   vmult(const SparseMatrix<double> &A,
         LevelVector &               dst,
@@ -97,7 +108,7 @@ namespace FoslsContact
       update_ghosts(src);
     LocalElements       out(dst);
     const LocalElements in(src);
-    if (A.m() > 512)
+    if (A.m() > min_rows_for_threads)
       A.vmult(out, in);
     else
       // small (coarse levels): without the start-up of the threads

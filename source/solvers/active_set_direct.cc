@@ -1,3 +1,5 @@
+#include <boost/serialization/utility.hpp>
+
 #include <fosls_contact/qp/sparse_direct_solver.h>
 
 #include <fosls_contact/solvers/active_set_direct.h>
@@ -100,10 +102,10 @@ namespace FoslsContact
   ActiveSetDirect::run(const Problem &    problem,
                        LevelVector &      x,
                        const unsigned int max_steps,
-                       Monitor *          monitor)
+                       IterationObserver *observer)
   {
-    const Outcome outcome = iterate(problem, x, max_steps, monitor);
-    return outcome == Outcome::cycling ? primal_active_set(problem, x, max_steps, monitor) :
+    const Outcome outcome = iterate(problem, x, max_steps, observer);
+    return outcome == Outcome::cycling ? primal_active_set(problem, x, max_steps, observer) :
                                          outcome;
   }
 
@@ -112,7 +114,7 @@ namespace FoslsContact
   ActiveSetDirect::iterate(const Problem &    problem,
                            LevelVector &      x,
                            const unsigned int max_steps,
-                           Monitor *          monitor)
+                           IterationObserver *observer)
   {
     const auto &[A, b, role, ub, factorization_pattern] = problem;
     const auto &       partitioner = x.get_partitioner();
@@ -153,17 +155,17 @@ namespace FoslsContact
           return Outcome::cycling;
         seen.push_back(active);
         previous = active;
-        if (monitor)
+        if (observer)
           x_old = x;
         solve_reduced(A, factorization_pattern, b, eliminated, x);
         vmult(A, Ax, x);
         for (unsigned int i = 0; i < n_owned; ++i)
           mu.local_element(i) = active[i] ? b.local_element(i) - Ax.local_element(i) : 0.;
         // The iterate of a PDAS step may be infeasible until the last
-        // step; it is reported as it is. The monitor's own stopping rule
+        // step; it is reported as it is. The observer's own stopping rule
         // does not end the method (only the repeated active set does),
         // its iteration limit does.
-        if (monitor && monitor->report(x, x_old) && !monitor->converged())
+        if (observer && observer->report(x, x_old) && !observer->converged())
           return Outcome::out_of_steps;
       }
     return Outcome::out_of_steps;
@@ -174,7 +176,7 @@ namespace FoslsContact
   ActiveSetDirect::primal_active_set(const Problem &    problem,
                                      LevelVector &      x,
                                      const unsigned int max_steps,
-                                     Monitor *          monitor)
+                                     IterationObserver *observer)
   {
     const auto &[A, b, role, ub, factorization_pattern] = problem;
     const auto &       partitioner = x.get_partitioner();
@@ -210,7 +212,7 @@ namespace FoslsContact
                          std::max(0., ub.local_element(i) - x.local_element(i)) /
                            direction.local_element(i));
         t = Utilities::MPI::min(t, x.get_mpi_communicator());
-        if (monitor)
+        if (observer)
           x_old = x;
         for (unsigned int i = 0; i < n_owned; ++i)
           {
@@ -230,7 +232,7 @@ namespace FoslsContact
               working[partitioner->global_to_local(release.second)] = false;
             done = !(release.first < 0.);
           }
-        if (monitor && monitor->report(x, x_old) && !monitor->converged() && !done)
+        if (observer && observer->report(x, x_old) && !observer->converged() && !done)
           return Outcome::out_of_steps;
         if (done)
           return Outcome::converged;
@@ -254,17 +256,17 @@ namespace FoslsContact
   void
   ActiveSetDirect::solve(const ConstrainedQP &qp,
                          LevelVector &        x,
-                         Monitor &            monitor)
+                         IterationObserver &  observer)
   {
     update_ghosts(x);
     qp.project_to_feasible(x);
-    monitor.start(x);
+    observer.start(x);
     const Outcome outcome =
       run({qp.matrix, qp.rhs, qp.role, qp.upper_bounds, qp.coupling_sparsity},
           x,
           std::numeric_limits<unsigned int>::max(),
-          &monitor);
+          &observer);
     if (outcome == Outcome::converged)
-      monitor.set_converged();
+      observer.set_converged();
   }
 } // namespace FoslsContact

@@ -22,24 +22,7 @@ namespace FoslsContact
     const unsigned int n_owned = fine_partitioner->locally_owned_size();
     n_coarse_local             = pattern.n_cols();
     n_coarse_owned             = coarse_partitioner->locally_owned_size();
-
-    // the columns of the owned rows of P
-    transpose_start.assign(n_coarse_local + 1, 0);
-    for (unsigned int r = 0; r < n_owned; ++r)
-      for (auto e = pattern.begin(r); e != pattern.end(r); ++e)
-        ++transpose_start[e->column() + 1];
-    for (unsigned int j = 0; j < n_coarse_local; ++j)
-      transpose_start[j + 1] += transpose_start[j];
-    transpose_row.resize(transpose_start.back());
-    transpose_position.resize(transpose_start.back());
-    std::vector<std::size_t> next(transpose_start.begin(), transpose_start.end() - 1);
-    for (unsigned int r = 0; r < n_owned; ++r)
-      for (auto e = pattern.begin(r); e != pattern.end(r); ++e)
-        {
-          const auto k          = next[e->column()]++;
-          transpose_row[k]      = r;
-          transpose_position[k] = e->global_index();
-        }
+    transpose_pattern(pattern, n_owned);
 
     // A P on the owned rows of A
     {
@@ -87,17 +70,47 @@ namespace FoslsContact
         ghost_start.push_back(ghost_columns.size());
       }
     ghost_values.resize(ghost_columns.size());
+    set_up_ghost_messages(*coarse_partitioner, coarse_pattern);
+  }
 
-    // who owns them (ghost rows are sorted by global index, the owners'
-    // ranges too), and the owners' view of the entries
+
+  void
+  GalerkinProduct::transpose_pattern(const SparsityPattern &pattern, const unsigned int n_owned)
+  {
+    // the columns of the owned rows of P
+    transpose_start.assign(n_coarse_local + 1, 0);
+    for (unsigned int r = 0; r < n_owned; ++r)
+      for (auto e = pattern.begin(r); e != pattern.end(r); ++e)
+        ++transpose_start[e->column() + 1];
+    for (unsigned int j = 0; j < n_coarse_local; ++j)
+      transpose_start[j + 1] += transpose_start[j];
+    transpose_row.resize(transpose_start.back());
+    transpose_position.resize(transpose_start.back());
+    std::vector<std::size_t> next(transpose_start.begin(), transpose_start.end() - 1);
+    for (unsigned int r = 0; r < n_owned; ++r)
+      for (auto e = pattern.begin(r); e != pattern.end(r); ++e)
+        {
+          const auto k          = next[e->column()]++;
+          transpose_row[k]      = r;
+          transpose_position[k] = e->global_index();
+        }
+  }
+
+
+  void
+  GalerkinProduct::set_up_ghost_messages(const Utilities::MPI::Partitioner &coarse_partitioner,
+                                         const SparsityPattern &            coarse_pattern)
+  {
+    // who owns the ghost rows (they are sorted by global index, the
+    // owners' ranges too), and the owners' view of the entries
     send_to.clear();
     receive_from.clear();
     if (Utilities::MPI::n_mpi_processes(comm) == 1)
       return;
     std::vector<types::global_dof_index> rows;
     for (const unsigned int j : ghost_row)
-      rows.push_back(coarse_partitioner->local_to_global(j));
-    const std::vector<unsigned int> owner = owners(*coarse_partitioner, rows);
+      rows.push_back(coarse_partitioner.local_to_global(j));
+    const std::vector<unsigned int> owner = owners(coarse_partitioner, rows);
     std::map<unsigned int, std::vector<types::global_dof_index>> entries;
     for (unsigned int r = 0; r < ghost_row.size(); ++r)
       {
@@ -107,7 +120,7 @@ namespace FoslsContact
         for (std::size_t k = ghost_start[r]; k < ghost_start[r + 1]; ++k)
           {
             entries[owner[r]].push_back(rows[r]);
-            entries[owner[r]].push_back(coarse_partitioner->local_to_global(ghost_columns[k]));
+            entries[owner[r]].push_back(coarse_partitioner.local_to_global(ghost_columns[k]));
           }
       }
     const auto received = Utilities::MPI::some_to_some(comm, entries);
@@ -116,11 +129,11 @@ namespace FoslsContact
         std::vector<std::pair<unsigned int, unsigned int>> positions;
         for (std::size_t k = 0; k + 1 < list.size(); k += 2)
           {
-            const unsigned int row = coarse_partitioner->global_to_local(list[k]);
+            const unsigned int row = coarse_partitioner.global_to_local(list[k]);
             unsigned int       col = numbers::invalid_unsigned_int;
-            if (coarse_partitioner->in_local_range(list[k + 1]) ||
-                coarse_partitioner->is_ghost_entry(list[k + 1]))
-              col = coarse_partitioner->global_to_local(list[k + 1]);
+            if (coarse_partitioner.in_local_range(list[k + 1]) ||
+                coarse_partitioner.is_ghost_entry(list[k + 1]))
+              col = coarse_partitioner.global_to_local(list[k + 1]);
             if (col == numbers::invalid_unsigned_int || !coarse_pattern.exists(row, col))
               positions.emplace_back(numbers::invalid_unsigned_int, 0);
             else
@@ -129,6 +142,26 @@ namespace FoslsContact
         receive_from.emplace_back(rank, positions);
       }
   }
+
+
+  namespace
+  {
+    /** The dense row @p row into row @p r of @p M, leaving it zero. */
+    void
+    take_row(SparseMatrix<double> &M, const unsigned int r, std::vector<double> &row)
+    {
+      for (auto e = M.begin(r); e != M.end(r); ++e)
+        {
+          e->value()       = row[e->column()];
+          row[e->column()] = 0.;
+        }
+    }
+
+    /** The message of an entry of the product outside the coarse pattern. */
+    const char *const outside_pattern =
+      "GalerkinProduct: a coarse operator entry outside the coupling pattern of the "
+      "coarse cells";
+  } // namespace
 
 
   void
@@ -154,15 +187,6 @@ namespace FoslsContact
     Threads::ThreadLocalStorage<std::vector<double>> dense_row(
       std::vector<double>(n_coarse_local, 0.));
 
-    // the dense row into row r of M, leaving it zero
-    auto take_row = [](SparseMatrix<double> &M, const unsigned int r, std::vector<double> &row) {
-      for (auto e = M.begin(r); e != M.end(r); ++e)
-        {
-          e->value()       = row[e->column()];
-          row[e->column()] = 0.;
-        }
-    };
-
     // product = A P, by the owned rows of A
     for_subranges(
       0u,
@@ -180,29 +204,9 @@ namespace FoslsContact
       },
       200);
 
-    // row j of P^T product from the rows of product at column j of P; a
-    // nonzero left in the dense row after the row of the result is read
-    // off lies outside the result's pattern
-    auto row_of_result = [&](const unsigned int j, std::vector<double> &row) {
-      for (std::size_t k = transpose_start[j]; k < transpose_start[j + 1]; ++k)
-        {
-          const double p = P_values[transpose_position[k]];
-          if (p != 0.)
-            {
-              const unsigned int r = transpose_row[k];
-              for (auto e = product.begin(r); e != product.end(r); ++e)
-                row[e->column()] += p * e->value();
-            }
-        }
-    };
-    auto check_rest = [&](const unsigned int j, std::vector<double> &row) {
-      for (std::size_t k = extra_start[j]; k < extra_start[j + 1]; ++k)
-        {
-          AssertThrow(row[extra_columns[k]] == 0.,
-                      ExcMessage("GalerkinProduct: a coarse operator entry outside the "
-                                 "coupling pattern of the coarse cells"));
-        }
-    };
+    // P^T product: the owned rows of the result, then the parts of the
+    // ghost rows; a nonzero left in the dense row after the row of the
+    // result is read off lies outside the result's pattern
     for_subranges(
       0u,
       n_coarse_owned,
@@ -212,7 +216,10 @@ namespace FoslsContact
           {
             row_of_result(j, row);
             take_row(galerkin, j, row);
-            check_rest(j, row);
+            for (std::size_t k = extra_start[j]; k < extra_start[j + 1]; ++k)
+              {
+                AssertThrow(row[extra_columns[k]] == 0., ExcMessage(outside_pattern));
+              }
           }
       },
       100);
@@ -226,13 +233,36 @@ namespace FoslsContact
             row_of_result(ghost_row[r], row);
             for (std::size_t k = ghost_start[r]; k < ghost_start[r + 1]; ++k)
               {
-                ghost_values[k]          = row[ghost_columns[k]];
-                row[ghost_columns[k]]    = 0.;
+                ghost_values[k]       = row[ghost_columns[k]];
+                row[ghost_columns[k]] = 0.;
               }
           }
       },
       100);
+    add_ghost_parts(galerkin);
+  }
 
+
+  void
+  GalerkinProduct::row_of_result(const unsigned int j, std::vector<double> &row) const
+  {
+    // row j of P^T product from the rows of product at column j of P
+    for (std::size_t k = transpose_start[j]; k < transpose_start[j + 1]; ++k)
+      {
+        const double p = P_values[transpose_position[k]];
+        if (p != 0.)
+          {
+            const unsigned int r = transpose_row[k];
+            for (auto e = product.begin(r); e != product.end(r); ++e)
+              row[e->column()] += p * e->value();
+          }
+      }
+  }
+
+
+  void
+  GalerkinProduct::add_ghost_parts(SparseMatrix<double> &galerkin)
+  {
     // the parts of the rows owned elsewhere to their owners, added here in
     // the order of the sending processes
     if (send_to.empty() && receive_from.empty())
@@ -258,9 +288,7 @@ namespace FoslsContact
           const auto &[row, col] = receive_from[s].second[k];
           if (row == numbers::invalid_unsigned_int)
             {
-              AssertThrow(receive_buffers[s][k] == 0.,
-                          ExcMessage("GalerkinProduct: a coarse operator entry outside "
-                                     "the coupling pattern of the coarse cells"));
+              AssertThrow(receive_buffers[s][k] == 0., ExcMessage(outside_pattern));
             }
           else if (receive_buffers[s][k] != 0.)
             galerkin.add(row, col, receive_buffers[s][k]);

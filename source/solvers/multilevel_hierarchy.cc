@@ -219,174 +219,199 @@ namespace FoslsContact
     level_n_colors.assign(n, 0);
     face_rel.resize(n);
     rerouting.resize(n);
-
-    // Rotated prolongations R_l^{-1} P R_{l-1}, for the local fine DoFs
-    // (their coarse DoFs are local: the parents of the cells here are here).
+    // (level 0 is solved directly: no patches)
     for (unsigned int l = 1; l < n; ++l)
       {
-        SparsityPattern      sp_c, sp_f, sp_tmp;
-        SparseMatrix<double> R_coarse, R_fine_inverse, tmp;
-        rotation_matrix(discretization.level(l - 1), false, sp_c, R_coarse);
-        rotation_matrix(discretization.level(l), true, sp_f, R_fine_inverse);
-        sp_tmp.reinit(0, 0, 0);
-        sp_tmp.compress();
-        tmp.reinit(sp_tmp);
-        transfer.prolongation(l).mmult(tmp, R_coarse);
-        rotated_sparsity[l] = std::make_unique<SparsityPattern>();
-        rotated_sparsity[l]->reinit(0, 0, 0);
-        rotated_sparsity[l]->compress();
-        rotated[l] = std::make_unique<SparseMatrix<double>>(*rotated_sparsity[l]);
-        R_fine_inverse.mmult(*rotated[l], tmp);
+        rotate_prolongation(l, transfer);
+        find_patches(l);
       }
+    if (discretization.get_scene().has_contact())
+      for (unsigned int l = 1; l < n; ++l)
+        relate_contact_faces(l);
+  }
 
+
+  template <int dim>
+  void
+  MultilevelHierarchy<dim>::rotate_prolongation(const unsigned int        l,
+                                                const LevelTransfer<dim> &transfer)
+  {
+    // R_l^{-1} P R_{l-1}, for the local fine DoFs (their coarse DoFs are
+    // local: the parents of the cells here are here)
+    SparsityPattern      sp_c, sp_f, sp_tmp;
+    SparseMatrix<double> R_coarse, R_fine_inverse, tmp;
+    rotation_matrix(discretization.level(l - 1), false, sp_c, R_coarse);
+    rotation_matrix(discretization.level(l), true, sp_f, R_fine_inverse);
+    sp_tmp.reinit(0, 0, 0);
+    sp_tmp.compress();
+    tmp.reinit(sp_tmp);
+    transfer.prolongation(l).mmult(tmp, R_coarse);
+    rotated_sparsity[l] = std::make_unique<SparsityPattern>();
+    rotated_sparsity[l]->reinit(0, 0, 0);
+    rotated_sparsity[l]->compress();
+    rotated[l] = std::make_unique<SparseMatrix<double>>(*rotated_sparsity[l]);
+    R_fine_inverse.mmult(*rotated[l], tmp);
+  }
+
+
+  template <int dim>
+  void
+  MultilevelHierarchy<dim>::find_patches(const unsigned int l)
+  {
     // Vertex patches in the order of their VertexKey, and their colors. A
     // process relaxes the patches with a DoF it owns; their vertices are
-    // vertices of its own cells, whose cells are all here. (Level 0 is
-    // solved directly: no patches.)
+    // vertices of its own cells, whose cells are all here.
     const auto &dof_handler = discretization.get_dof_handler();
-    for (unsigned int l = 1; l < n; ++l)
+    const auto &data        = discretization.level(l);
+    std::map<unsigned int, VertexKey<dim>>                     key;
+    std::map<unsigned int, std::set<types::global_dof_index>> patch;
+    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
+      if (Discretization<dim>::is_present(cell))
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const unsigned int vertex = cell->vertex_index(v);
+            if (key.count(vertex) == 0)
+              key[vertex] = vertex_key<dim>(cell, v);
+            if (data.owned_cell_vertices.count(vertex) == 0)
+              continue;
+            auto &p = patch[vertex];
+            for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) { p.insert(dof); });
+          }
+
+    // every vertex of a cell here is an item of the level scheduling
+    std::vector<std::pair<VertexKey<dim>, unsigned int>> order;
+    for (const auto &[vertex, k] : key)
+      order.emplace_back(k, vertex);
+    std::sort(order.begin(), order.end(), [](const auto &a, const auto &b) {
+      return a.first < b.first;
+    });
+    std::map<unsigned int, unsigned int> position;
+    std::vector<types::global_dof_index> color_dof;
+    for (const auto &[k, vertex] : order)
       {
-        const auto &data = discretization.level(l);
+        position[vertex] = color_dof.size();
+        color_dof.push_back(data.vertex_dofs.at(vertex)[0]);
+      }
+    // patches are coupled if their vertices share a cell
+    std::vector<std::vector<unsigned int>> coupled(order.size());
+    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
+      if (Discretization<dim>::is_present(cell))
+        for (const unsigned int v : cell->vertex_indices())
+          for (const unsigned int w : cell->vertex_indices())
+            if (v != w)
+              coupled[position[cell->vertex_index(v)]].push_back(
+                position[cell->vertex_index(w)]);
+    const std::vector<unsigned int> color =
+      level_schedule(coupled, color_dof, data.partitioner);
 
-        std::map<unsigned int, VertexKey<dim>>                     key;
-        std::map<unsigned int, std::set<types::global_dof_index>> patch;
-        for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
-          if (Discretization<dim>::is_present(cell))
-            for (const unsigned int v : cell->vertex_indices())
-              {
-                const unsigned int vertex = cell->vertex_index(v);
-                if (key.count(vertex) == 0)
-                  key[vertex] = vertex_key<dim>(cell, v);
-                if (data.owned_cell_vertices.count(vertex) == 0)
-                  continue;
-                auto &p = patch[vertex];
-                for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) { p.insert(dof); });
-              }
-
-        // every vertex of a cell here is an item of the level scheduling
-        std::vector<std::pair<VertexKey<dim>, unsigned int>> order;
-        for (const auto &[vertex, k] : key)
-          order.emplace_back(k, vertex);
-        std::sort(order.begin(), order.end(), [](const auto &a, const auto &b) {
-          return a.first < b.first;
+    unsigned int n_colors = 0;
+    for (const auto &[k, vertex] : order)
+      {
+        const auto it = patch.find(vertex);
+        if (it == patch.end())
+          continue;
+        std::vector<types::global_dof_index> dofs(it->second.begin(), it->second.end());
+        if (std::none_of(dofs.begin(), dofs.end(), [&](const auto dof) {
+              return dof < data.n_owned();
+            }))
+          continue;
+        // the patch's DoFs in global order, so that every process that
+        // relaxes it computes the same numbers in the same order
+        std::sort(dofs.begin(), dofs.end(), [&](const auto a, const auto b) {
+          return data.global(a) < data.global(b);
         });
-        std::map<unsigned int, unsigned int> position;
-        std::vector<types::global_dof_index> color_dof;
-        for (const auto &[k, vertex] : order)
-          {
-            position[vertex] = color_dof.size();
-            color_dof.push_back(data.vertex_dofs.at(vertex)[0]);
-          }
-        // patches are coupled if their vertices share a cell
-        std::vector<std::vector<unsigned int>> coupled(order.size());
-        for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
-          if (Discretization<dim>::is_present(cell))
-            for (const unsigned int v : cell->vertex_indices())
-              for (const unsigned int w : cell->vertex_indices())
-                if (v != w)
-                  coupled[position[cell->vertex_index(v)]].push_back(
-                    position[cell->vertex_index(w)]);
-        const std::vector<unsigned int> color =
-          level_schedule(coupled, color_dof, data.partitioner);
-
-        unsigned int n_colors = 0;
-        for (const auto &[k, vertex] : order)
-          {
-            const auto it = patch.find(vertex);
-            if (it == patch.end())
-              continue;
-            std::vector<types::global_dof_index> dofs(it->second.begin(), it->second.end());
-            if (std::none_of(dofs.begin(), dofs.end(), [&](const auto dof) {
-                  return dof < data.n_owned();
-                }))
-              continue;
-            // the patch's DoFs in global order, so that every process that
-            // relaxes it computes the same numbers in the same order
-            std::sort(dofs.begin(), dofs.end(), [&](const auto a, const auto b) {
-              return data.global(a) < data.global(b);
-            });
-            level_patches[l].push_back(dofs);
-            level_colors[l].push_back(color[position[vertex]]);
-            n_colors = std::max(n_colors, color[position[vertex]] + 1);
-          }
-        level_n_colors[l] =
-          Utilities::MPI::max(n_colors, discretization.get_communicator());
+        level_patches[l].push_back(dofs);
+        level_colors[l].push_back(color[position[vertex]]);
+        n_colors = std::max(n_colors, color[position[vertex]] + 1);
       }
+    level_n_colors[l] = Utilities::MPI::max(n_colors, discretization.get_communicator());
+  }
 
+
+  template <int dim>
+  void
+  MultilevelHierarchy<dim>::relate_contact_faces(const unsigned int l)
+  {
     // Contact relations between level l-1 (coarse) and l (fine), for the
-    // coarse contact faces owned here.
-    const auto &scene = discretization.get_scene();
-    if (!scene.has_contact())
-      return;
-    for (unsigned int l = 1; l < n; ++l)
-      {
-        const auto &coarse = discretization.level(l - 1);
-        const auto &fine   = discretization.level(l);
-        for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l - 1))
-          if (Discretization<dim>::is_present(cell))
-            for (const unsigned int f : cell->face_indices())
-              if (cell->at_boundary(f) && scene.is_contact(cell->face(f)->boundary_id()))
-                {
-                  const auto j = coarse.face_dofs.at(cell->face(f)->index())[0];
-                  for (const auto i : inside_dofs(cell, f, fine))
-                    rerouting[l].emplace_back(i, j);
-                }
-        auto fine_normal_dof = [&](const unsigned int vertex) {
-          return fine.vertex_dofs.at(vertex)[0];
-        };
-        auto coarse_normal_dof = [&](const unsigned int vertex) {
-          const auto dof = coarse.vertex_dofs.at(vertex)[0];
-          return coarse.role[dof] == DoFRole::bounded ? dof : numbers::invalid_dof_index;
-        };
-        for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l - 1))
-          if (cell->is_locally_owned_on_level())
-            for (const unsigned int f : cell->face_indices())
-              {
-                if (!cell->at_boundary(f) ||
-                    !scene.is_contact(cell->face(f)->boundary_id()))
-                  continue;
-                const auto   face = cell->face(f);
-                FaceRelation frel;
-                frel.coarse_dof = coarse.face_dofs.at(face->index())[0];
-                for (unsigned int c = 0; c < face->n_children(); ++c)
-                  frel.sons.push_back(fine.face_dofs.at(face->child(c)->index())[0]);
-                // (all children of an owned cell are here)
-                frel.inside = inside_dofs(cell, f, fine);
+    // coarse contact faces owned here; the entries the rerouting may give
+    // for every coarse contact face with a cell here.
+    const auto &scene       = discretization.get_scene();
+    const auto &dof_handler = discretization.get_dof_handler();
+    const auto &coarse      = discretization.level(l - 1);
+    const auto &fine        = discretization.level(l);
+    auto        on_contact  = [&](const auto &cell, const unsigned int f) {
+      return cell->at_boundary(f) && scene.is_contact(cell->face(f)->boundary_id());
+    };
+    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l - 1))
+      if (Discretization<dim>::is_present(cell))
+        for (const unsigned int f : cell->face_indices())
+          if (on_contact(cell, f))
+            {
+              const auto j = coarse.face_dofs.at(cell->face(f)->index())[0];
+              for (const auto i : inside_dofs(cell, f, fine))
+                rerouting[l].emplace_back(i, j);
+            }
+    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l - 1))
+      if (cell->is_locally_owned_on_level())
+        for (const unsigned int f : cell->face_indices())
+          if (on_contact(cell, f))
+            face_rel[l].push_back(face_relation(cell, f, coarse, fine));
+  }
 
-                // coarse contact edges of this face (the face itself in 2D)
-                std::vector<std::array<unsigned int, 3>> edges; // a, b, midpoint
-                if (dim == 2)
-                  edges.push_back({{face->vertex_index(0),
-                                    face->vertex_index(1),
-                                    face->child(0)->vertex_index(1)}});
-                else
-                  {
-                    for (unsigned int e = 0; e < GeometryInfo<dim>::lines_per_face; ++e)
-                      {
-                        const auto line = face->line(e);
-                        edges.push_back({{line->vertex_index(0),
-                                          line->vertex_index(1),
-                                          line->child(0)->vertex_index(1)}});
-                      }
-                    // the face center is the one vertex all sons share
-                    std::map<unsigned int, unsigned int> count;
-                    for (unsigned int c = 0; c < face->n_children(); ++c)
-                      for (const unsigned int v : face->child(c)->vertex_indices())
-                        ++count[face->child(c)->vertex_index(v)];
-                    for (const auto &[v, k] : count)
-                      if (k == face->n_children())
-                        frel.fine_center = fine_normal_dof(v);
-                    for (const unsigned int v : face->vertex_indices())
-                      if (coarse_normal_dof(face->vertex_index(v)) != numbers::invalid_dof_index)
-                        frel.coarse_vertices.push_back(coarse_normal_dof(face->vertex_index(v)));
-                  }
-                for (const auto &[a, b, m] : edges)
-                  frel.edges.push_back({{{coarse_normal_dof(a), coarse_normal_dof(b)}},
-                                        {{fine_normal_dof(a), fine_normal_dof(b)}},
-                                        fine_normal_dof(m)});
-                face_rel[l].push_back(frel);
-              }
+
+  template <int dim>
+  template <typename Iterator>
+  FaceRelation
+  MultilevelHierarchy<dim>::face_relation(const Iterator &      cell,
+                                          const unsigned int    f,
+                                          const LevelData<dim> &coarse,
+                                          const LevelData<dim> &fine) const
+  {
+    auto fine_normal_dof = [&](const unsigned int vertex) {
+      return fine.vertex_dofs.at(vertex)[0];
+    };
+    auto coarse_normal_dof = [&](const unsigned int vertex) {
+      const auto dof = coarse.vertex_dofs.at(vertex)[0];
+      return coarse.role[dof] == DoFRole::bounded ? dof : numbers::invalid_dof_index;
+    };
+    const auto   face = cell->face(f);
+    FaceRelation frel;
+    frel.coarse_dof = coarse.face_dofs.at(face->index())[0];
+    for (unsigned int c = 0; c < face->n_children(); ++c)
+      frel.sons.push_back(fine.face_dofs.at(face->child(c)->index())[0]);
+    // (all children of an owned cell are here)
+    frel.inside = inside_dofs(cell, f, fine);
+
+    // coarse contact edges of this face (the face itself in 2D)
+    std::vector<std::array<unsigned int, 3>> edges; // a, b, midpoint
+    if (dim == 2)
+      edges.push_back(
+        {{face->vertex_index(0), face->vertex_index(1), face->child(0)->vertex_index(1)}});
+    else
+      {
+        for (unsigned int e = 0; e < GeometryInfo<dim>::lines_per_face; ++e)
+          {
+            const auto line = face->line(e);
+            edges.push_back(
+              {{line->vertex_index(0), line->vertex_index(1), line->child(0)->vertex_index(1)}});
+          }
+        // the face center is the one vertex all sons share
+        std::map<unsigned int, unsigned int> count;
+        for (unsigned int c = 0; c < face->n_children(); ++c)
+          for (const unsigned int v : face->child(c)->vertex_indices())
+            ++count[face->child(c)->vertex_index(v)];
+        for (const auto &[v, k] : count)
+          if (k == face->n_children())
+            frel.fine_center = fine_normal_dof(v);
+        for (const unsigned int v : face->vertex_indices())
+          if (coarse_normal_dof(face->vertex_index(v)) != numbers::invalid_dof_index)
+            frel.coarse_vertices.push_back(coarse_normal_dof(face->vertex_index(v)));
       }
+    for (const auto &[a, b, m] : edges)
+      frel.edges.push_back({{{coarse_normal_dof(a), coarse_normal_dof(b)}},
+                            {{fine_normal_dof(a), fine_normal_dof(b)}},
+                            fine_normal_dof(m)});
+    return frel;
   }
 
   template struct VertexKey<2>;

@@ -1,4 +1,5 @@
 #include <fosls_contact/qp/gathered_qp.h>
+#include <fosls_contact/solvers/energy_check.h>
 #include <fosls_contact/solvers/projected_gauss_seidel.h>
 
 namespace FoslsContact
@@ -6,11 +7,11 @@ namespace FoslsContact
   void
   ProjectedGaussSeidel::solve(const ConstrainedQP &distributed,
                               LevelVector &        x,
-                              Monitor &            monitor)
+                              IterationObserver &  observer)
   {
     update_ghosts(x);
     distributed.project_to_feasible(x);
-    monitor.start(x);
+    observer.start(x);
     // The sweep is sequential in the order of the support points: it runs
     // on the first process, on the gathered problem (the baseline, meant
     // for one process).
@@ -46,16 +47,14 @@ namespace FoslsContact
                 // errors)
                 const double d      = xi - whole.local_element(i);
                 const double change = -r * d + 0.5 * a_ii * d * d;
-                if (change > 1e-10 * (std::abs(r * d) + 0.5 * a_ii * d * d) + 1e-300)
+                if (increases_energy(change, std::abs(r * d) + 0.5 * a_ii * d * d))
                   ++increases;
                 whole.local_element(i) = xi;
               }
           }
         gathered.scatter(whole, x);
-        const unsigned int all_increases = Utilities::MPI::sum(increases, comm);
-        for (unsigned int k = 0; k < all_increases; ++k)
-          monitor.note_energy_increase();
-        if (monitor.report(x, x_old))
+        observer.note_energy_increases(Utilities::MPI::sum(increases, comm));
+        if (observer.report(x, x_old))
           break;
       }
   }

@@ -288,7 +288,7 @@ def compare_with_reference(run, reference, label, force_tolerance=1e-8,
 
 def check_flat_contact_run(run, max_iterations, n_contact_vertices):
     """The checks of a multigrid run on a flat obstacle that the whole
-    contact boundary touches (hard_cube3d, hard_deep_hierarchy): converged
+    contact boundary touches (cube3d_convergence, deep_hierarchy): converged
     within @p max_iterations to a KKT residual < 1e-10, monotone and
     feasible, and all @p n_contact_vertices contact vertices in contact
     (last column of contact.csv)."""

@@ -1,14 +1,12 @@
 #!/usr/bin/env python3
-# The stopping criterion "discretization accuracy" (issue "Monotone
-# multilevel solver", item 7): stop when the estimated algebraic error
-# rho/(1-rho) |dx|_A / sqrt(2) is below Discretization fraction (0.1) times
-# sqrt(J), J estimating the squared discretization error. Before session 4
-# the rate rho came from the last iterations whatever the active set did:
-# on the half disc (prm/hertz.prm, 4 levels, Grading 2) the run stopped
-# after 2 iterations with J = 6.45e-6 against 6.41e-7 at convergence
-# (10 times too large; by hand). Now the criterion holds only once the
-# active set stayed the same for an iteration, with the largest rate since
-# it last changed: measured 3 iterations (4 to Tolerance 1e-8), J equal to
+# The stopping criterion "discretization accuracy": stop when the
+# estimated algebraic error rho/(1-rho) |dx|_A / sqrt(2) is below
+# Discretization fraction (0.1) times sqrt(J), J estimating the squared
+# discretization error. The criterion holds only once the active set stayed
+# the same for an iteration, with the largest rate since it last changed
+# (with the rate of the last iterations whatever the active set did, the
+# half disc, prm/hertz.prm, 4 levels, Grading 2, stopped after 2
+# iterations with J = 6.45e-6 against 6.41e-7 at convergence): measured 3 iterations (4 to Tolerance 1e-8), J equal to
 # the converged J to 6 digits.
 # Checks, for the half disc and the square (5 levels) against the active
 # set solver: converged; J <= (1 + 0.1^2) J_ref (the criterion's promise:

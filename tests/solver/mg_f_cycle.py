@@ -8,14 +8,13 @@
 # Checked against the W-cycle (the default) on the same scene:
 # - default solver, square (prm/square.prm), lambda = 1 and inf, 5 and 6
 #   levels: converged (KKT residual < 1e-10), monotone and feasible, the
-#   same iterations, at most one cycle more, rate per cycle <= 0.25 (issue
-#   "Monotone multilevel solver", item 9), J and the contact force equal to
+#   same iterations, at most one cycle more, rate per cycle <= 0.25, J and the contact force equal to
 #   the W-cycle's to 1e-10 / 1e-9 relative, and the visits above;
 # - plain cycle (Krylov steps = 0), square with 6 levels: the same, with at
 #   most one iteration more;
 # - default solver on the half disc (prm/hertz.prm) with 4 levels: the same
 #   iterations, at most 8 cycles more (no rate bound: W's is 0.15, F's 0.30).
-# Measured (Nov 2026, session 18): on the square the F-cycle took the
+# Measured: on the square the F-cycle took the
 # W-cycle's iterations and cycles (default solver: 3 iterations, 12 cycles; plain cycle on 6 levels: 11 iterations, levels
 # 1..5 visited 55, 44, 33, 22, 11 times instead of 176, 88, 44, 22, 11).
 # On the half disc with 4 levels F took 40 cycles against W's 35 (rate

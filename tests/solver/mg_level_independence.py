@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# Monotone multigrid (issue "Monotone multilevel solver", item 10.3): the
+# Monotone multigrid: the
 # iteration count of the default solver (Krylov steps = 50, W(3,3),
 # projection b, coarse-solution start, tolerance 1e-8) does not grow with
 # the level: the square (prm/square.prm) with lambda = 1 and lambda = inf on

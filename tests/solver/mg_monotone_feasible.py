@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# Monotone multigrid (issue "Monotone multilevel solver", item 10.1): J never
+# Monotone multigrid: J never
 # increases and every iterate is feasible, for the plain monotone cycle of
 # the paper (Solver/Krylov steps = 0) and for the default (truncated
 # nonsmooth Newton multigrid, Krylov steps = 50), on
@@ -20,10 +20,10 @@
 # 0.01; measured: exactly 0). All runs stop after at most 30 iterations
 # except the default from the coarse start, which must converge (KKT
 # residual < 1e-10; measured 3-4 iterations). The plain cycle with
-# projection b must converge within 30 cycles (measured 10-13; before
-# session 4 it did not on the tilted square, the half disc and the squares
-# from a zero start, because the Galerkin operators were summed up over
-# truncation changes, see tests/unit/galerkin_product), except on the half
+# projection b must converge within 30 cycles (measured 10-13; with
+# Galerkin operators summed up over truncation changes it does not on the
+# tilted square, the half disc and the squares from a zero start, see
+# tests/unit/galerkin_product), except on the half
 # disc with 3 levels from a zero start: there it keeps 49 active DoFs
 # (the solution has 47) and creeps at a rate of 1.000 (J -1% per 10
 # cycles, measured over 300 cycles), the known weakness of the plain
@@ -37,8 +37,7 @@
 # printed: the plain cycle on the half disc with 3 levels from a zero start
 # rebuilds its coarse operator between the two visits once (an active DoF
 # changes), where the defect must be recomputed; taking it from the first
-# visit there too was off by 5e-9 and counted 30 visits instead of 29 (by
-# hand, session 22). That run is repeated on 2 processes, where the check's
+# visit there too is off by 5e-9 and counts 30 visits instead of 29. That run is repeated on 2 processes, where the check's
 # products and norms span both.
 import sys
 import os

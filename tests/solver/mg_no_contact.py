@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# Monotone multigrid (issue "Monotone multilevel solver", item 10.4): a
+# Monotone multigrid: a
 # scene without contact is a linear FOSLS problem, and the multigrid solver
 # gives the solution of the linear solve (the active set solver: one
 # direct solve): prm/elasticity_mms.prm (manufactured solution) on 4 and 5

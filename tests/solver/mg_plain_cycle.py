@@ -1,20 +1,19 @@
 #!/usr/bin/env python3
-# The paper's plain monotone cycle (Solver/Krylov steps = 0) converges where
-# it used to stall (fixed by rerouting the flux of partly truncated coarse
-# contact faces, MonotoneMultigrid::reroute_flux):
+# The paper's plain monotone cycle (Solver/Krylov steps = 0) converges on
+# problems where it stalls without the rerouting of the flux of partly
+# truncated coarse contact faces (FluxRerouting) or with Galerkin operators
+# that add up over truncation changes (deal.II's SparseMatrix::mmult/Tmmult
+# add to their result, tests/unit/galerkin_product):
 #  - the half disc (prm/hertz.prm, 2 levels, Grading = 1, the paper's
-#    two-level experiment): was rate 0.9999 per cycle, J 19% above the
-#    active set solver's after 300 cycles; now 13 cycles;
-#  - the square (4 levels) from a zero start: was J = 7.9e-5 vs 2.5e-7
-#    after 300 cycles.
+#    two-level experiment): without the rerouting rate 0.9999 per cycle,
+#    J 19% above the active set solver's after 300 cycles; measured 13
+#    cycles;
+#  - the square (4 levels) from a zero start: without the rerouting
+#    J = 7.9e-5 vs 2.5e-7 after 300 cycles;
 #  - the square (5 levels) with C_compl = 0, a near-degenerate contact
-#    (corner multipliers 100x smaller than in the middle): was rate 0.995,
-#    "NOT converged after 100 iterations", J 0.1% above the optimum (test
-#    bug_plain_cycle, disabled). Cause found in session 4: deal.II's
-#    SparseMatrix::mmult/Tmmult add to their result, so every Galerkin
-#    operator after the first change of the truncation was the sum of all
-#    earlier ones (tests/unit/galerkin_product); with GalerkinProduct it
-#    converges.
+#    (corner multipliers 100x smaller than in the middle): with summed
+#    Galerkin operators rate 0.995, not converged after 100 iterations,
+#    J 0.1% above the optimum.
 # Checks: converged within 100 cycles, force equal to the active set
 # solver's to 1e-6, J never increased.
 import sys

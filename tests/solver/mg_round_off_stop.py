@@ -12,16 +12,15 @@
 # round_off_correction), stagnation counts only within 1000x of it, and
 # the CG of the default solver runs to a residual reduction of 1e-3:
 # measured 5 iterations each, forces within 1e-9.
-# Session 17: a slow steady creep ended as "converged" by the tolerance
-# (the correction, not the error, below it) or by the stagnation check
-# (four corrections within 1000x the floor, none below half the smallest
-# before). The plain W-cycle (Krylov steps = 0) from a zero start on the
-# square with contact at one end (gap 0.02 (1 - x), 4 levels) creeps at
-# about 0.99 per cycle: it stopped after 1070 iterations with J 6.4e-10
-# and the force 8.5e-6 off (6 levels: 1376 iterations, force 3.4e-5 off).
-# Both stops now take the rate into account (the error is about
-# rho/(1-rho) times the correction) and stagnation needs a correction that
-# went up: 1368 iterations (0.8 s), J equal to all digits, force 1.2e-7.
+# A slow steady creep must not end as "converged" by the tolerance (the
+# correction, not the error, below it) or by the stagnation check: the
+# plain W-cycle (Krylov steps = 0) from a zero start on the square with
+# contact at one end (gap 0.02 (1 - x), 4 levels) creeps at about 0.99 per
+# cycle; judged by the correction alone it stopped after 1070 iterations
+# with the force 8.5e-6 off. Both stops take the rate into account (the
+# error is about rho/(1-rho) times the correction) and stagnation needs a
+# correction that went up: measured 1368 iterations, J equal to all
+# digits, force 1.2e-7.
 # Checks: a run that reports convergence has the force of the active set
 # solver to 1e-7 relative (tolerance 1e-8 resp. 1e-10); the creeping run
 # J to 1e-10 and the force to 1e-6.

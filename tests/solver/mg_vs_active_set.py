@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# Monotone multigrid (issue "Monotone multilevel solver", item 10.2): the
+# Monotone multigrid: the
 # multigrid result is the KKT point of the active set (reference) solver,
 # for each coarse obstacle projection a, b, c, d (Solver/Projection), on
 # the square (prm/square.prm, 3 and 4 levels) and on the half disc

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# Distributed runs (issue "Distributed runs with MPI", items 5 and 8): the
+# Distributed runs: the
 # same scene on 1 process and on 2, 3 or 4 (mpirun --oversubscribe, one
 # thread each) gives the same answer. Per case and process count N > 1,
 # against the run on one process: the contact force agrees to 1e-10

@@ -1,12 +1,10 @@
-// GalerkinProduct and the patch smoother's level scheduling (issue
-// "Monotone multilevel solver", items 2 and 3; issue "Distributed runs",
-// item 6).
+// GalerkinProduct and the patch smoother's level scheduling.
 //
 // 1. deal.II 9.4's SparseMatrix::mmult / Tmmult with
 //    rebuild_sparsity_pattern = false ADD the product to the result instead
 //    of overwriting it (pinned here: if a later deal.II changes that, this
-//    line changes). The solver used them until session 4, so every
-//    Galerkin operator after the first change of the truncation was the
+//    line changes). A solver that called them on reused matrices would make
+//    every Galerkin operator after the first change of the truncation the
 //    sum of all earlier ones.
 // 2. GalerkinProduct::compute overwrites: P~^T A P~ for a truncated P~,
 //    computed twice with different truncations, equals deal.II's product
@@ -271,7 +269,7 @@ main(int argc, char *argv[])
           PatchSmoother smoother(1);
           smoother.initialize_level(0, A, ordered, color, n_colors, role, partitioner);
           smoother.set_obstacles(0, ub);
-          smoother.set_backward(backward);
+          smoother.set_transpose(backward);
           smoother.set_steps(2);
           LevelVector v(partitioner);
           smoother.smooth(0, v, r);

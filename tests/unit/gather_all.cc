@@ -1,5 +1,4 @@
-// gather_all (qp/level_algebra.h), run on 2 MPI processes (issue
-// "Distributed runs"): every process gets every process's object, in the
+// gather_all (qp/level_algebra.h), run on 2 MPI processes: every process gets every process's object, in the
 // order of the ranks, and the same as from Utilities::MPI::all_gather(),
 // for the three ways it takes:
 // - a trivially copyable object (an int, a std::array) as bytes with

@@ -9,27 +9,19 @@
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
 
-#include <fosls_contact/qp/level_algebra.h>
-#include <fosls_contact/qp/matrix_entry_import.h>
+#include <fosls_contact/qp/algebraic_level.h>
 #include <fosls_contact/scene/scene.h>
 
 #include <array>
 #include <map>
 #include <set>
+#include <string>
+#include <vector>
 
 namespace FoslsContact
 {
-  /**
-   * The role of one degree of freedom in the constrained quadratic problem.
-   */
-  enum class DoFRole : unsigned char
-  {
-    free,    ///< unconstrained
-    fixed,   ///< Dirichlet u, Neumann sigma n, tangential contact traction
-    bounded, ///< contact: normal displacement <= g or normal stress <= 0
-  };
-
   /**
    * A block of DoFs whose coordinates are changed to the normal-tangential
    * system of paper section 4.3: x_cartesian = matrix * x_rotated on
@@ -71,33 +63,18 @@ namespace FoslsContact
   };
 
   /**
-   * Everything the algebra needs to know about one level, on this process:
-   * the DoFs it owns and its ghost DoFs (those of the ghost cells around
-   * its own cells; `partitioner`), and for all of them, in local indices
-   * (LevelVector): the DoF roles, the values of fixed DoFs and the upper
-   * bounds (both in the rotated basis), the rotations, and the contact
-   * entities.
+   * One level of the discretization on this process: the algebra's view
+   * of it (AlgebraicLevel: the DoFs it owns and its ghost DoFs, those of
+   * the ghost cells around its own cells, their roles, fixed values and
+   * upper bounds in the rotated basis, the coupling pattern), and the
+   * mesh's: the rotations, the contact entities, and which DoFs belong to
+   * which vertex and face. All DoFs are local indices (LevelVector).
    */
   template <int dim>
-  struct LevelData
+  struct LevelData : AlgebraicLevel
   {
-    /** The number of DoFs of the level (all processes). */
-    types::global_dof_index                 n_dofs = 0;
-    std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
-    /** Local DoFs: owned, then ghosts. */
-    unsigned int n_owned() const { return partitioner->locally_owned_size(); }
-    unsigned int n_local() const
-    {
-      return partitioner->locally_owned_size() + partitioner->n_ghost_indices();
-    }
-    /** The global index of local DoF @p i. */
-    types::global_dof_index global(const unsigned int i) const
-    {
-      return partitioner->local_to_global(i);
-    }
-    std::vector<DoFRole>                    role;
-    LevelVector                             fixed_values;
-    LevelVector                             upper_bounds;
+    LevelData() { dimension = dim; }
+
     std::vector<RotationBlock<dim>>         rotations;
     /** For each local DoF, the index of its rotation block, or invalid. */
     std::vector<unsigned int>               rotation_of_dof;
@@ -117,17 +94,6 @@ namespace FoslsContact
      * here.
      */
     std::set<unsigned int> owned_cell_vertices;
-    /**
-     * The coupling pattern of the level's cells, in local indices, for the
-     * rows this process holds: its own DoFs, and the ghost DoFs of the
-     * vertex patches at the vertices of its cells (the patch smoother
-     * relaxes every patch with a DoF of its own, and needs the rows of all
-     * the patch's DoFs). Every level matrix lies on it: the assembled one
-     * and the Galerkin operators (MonotoneMultigrid).
-     */
-    SparsityPattern                         sparsity;
-    /** The ghost rows of `sparsity`, copied from their owners. */
-    MatrixEntryImport                       ghost_rows;
   };
 
   /**
@@ -260,7 +226,104 @@ namespace FoslsContact
      * numbering depends on the partition (see sweep_order()).
      */
     void renumber_level(const unsigned int l);
+
+    /**
+     * The boundary conditions of one level as apply_boundary_faces()
+     * collects them from the boundary faces here, for the contact vertices
+     * and the rotations.
+     */
+    struct BoundaryData
+    {
+      /**
+       * Dirichlet vertices with the components prescribed there (the
+       * union over their Dirichlet faces: a corner of a clamped and a
+       * roller side is clamped).
+       */
+      std::map<unsigned int, std::array<bool, dim>> dirichlet_vertices;
+      /** The vertices of the contact faces, with their positions. */
+      std::map<unsigned int, Point<dim>> contact_vertex_points;
+      /** A contact face, for its rotation (add_rotations()). */
+      struct ContactFaceData
+      {
+        unsigned int                             face_index;
+        std::array<types::global_dof_index, dim> dofs;
+        Point<dim>                               center;
+        Tensor<1, dim>                           normal;
+        /** The face's area and the mean normal component of its RT basis function. */
+        double area, c;
+      };
+      std::vector<ContactFaceData> contact_faces;
+    };
+
+    /**
+     * The level data of level @p l: map_level_dofs(), then the roles,
+     * fixed values and bounds of the boundary faces and the contact
+     * vertices, the rotations and the coupling pattern.
+     */
     void setup_level(const unsigned int l);
+    /** The local level DoFs of @p cell of level @p l. */
+    template <typename Iterator>
+    void get_local_dofs(const unsigned int                    l,
+                        const Iterator &                      cell,
+                        std::vector<types::global_dof_index> &dofs) const;
+    /**
+     * The partitioner of level @p l, the arrays of its local DoFs (every
+     * DoF free and unbounded) and the DoFs of every vertex and face.
+     */
+    void map_level_dofs(const unsigned int l);
+    /**
+     * The roles and values of the DoFs on the Dirichlet, Neumann and
+     * contact faces of level @p l: prescribed displacements, tractions as
+     * the L2 projection onto the face's normal-flux basis function (they
+     * are essential here), the contact faces' normal stress bounded.
+     */
+    BoundaryData apply_boundary_faces(const unsigned int l);
+    /** A contact face: tangential tractions 0, the normal one <= 0. */
+    static void bound_contact_face(LevelData<dim> &                                data,
+                                   const std::array<types::global_dof_index, dim> &face_rt);
+    /**
+     * The contact vertices of level @p l: the vertices of the contact
+     * faces that no Dirichlet face prescribes u.n at. Refuses a
+     * prescribed displacement into the obstacle and a roller whose
+     * prescribed components the normal has a part along.
+     */
+    void set_contact_vertices(const unsigned int l, const BoundaryData &boundary);
+    /**
+     * A contact vertex on a roller (Dirichlet in the components @p mask
+     * with the values @p values): the rotated coordinates that are the
+     * prescribed components are fixed, u.n is bounded by @p gap. False
+     * (nothing set) if @p n has a part along a prescribed component.
+     */
+    bool roller_contact_vertex(LevelData<dim> &                                data,
+                               const std::array<types::global_dof_index, dim> &dofs,
+                               const std::array<bool, dim> &                   mask,
+                               const Tensor<1, dim> &                          n,
+                               const double                                    gap,
+                               const Vector<double> &                          values) const;
+    /**
+     * The errors of set_contact_vertices(), over all processes: the first
+     * unsupported roller vertex (@p unsupported, empty if none here) and
+     * the largest penetration of a prescribed vertex. Collective.
+     */
+    void check_contact_vertices(const LevelData<dim> &data,
+                                std::string           unsupported,
+                                double                penetration) const;
+    /** The rotation blocks and contact entities of level @p l. */
+    void add_rotations(const unsigned int l, const BoundaryData &boundary);
+    /**
+     * The coupling pattern of level @p l for the rows held here, and the
+     * import of its ghost rows.
+     */
+    void set_coupling_pattern(const unsigned int l);
+    /** |n - e_1| below which the Householder reflection of n is I. */
+    static constexpr double householder_tolerance = 1e-12;
+    /**
+     * A displacement prescribed at a contact vertex exceeds the gap when
+     * u.n - g is above this times 1 + |u.n| + |g|: round-off of the data
+     * (sin(pi) = 1.2e-16 against a gap of 0) passes.
+     */
+    static constexpr double penetration_round_off = 1e-12;
+
     /** x <- R x (or R^{-1} x) block by block on level @p l. */
     void apply_rotations(const unsigned int l,
                          LevelVector &      x,

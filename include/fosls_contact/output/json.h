@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace FoslsContact
 {
@@ -20,6 +21,16 @@ namespace FoslsContact
     std::ostringstream s;
     s << std::setprecision(12) << value;
     return s.str();
+  }
+
+  /** A JSON array of @p items, each already JSON text: "[a, b, c]". */
+  inline std::string
+  json_array(const std::vector<std::string> &items)
+  {
+    std::string text = "[";
+    for (unsigned int i = 0; i < items.size(); ++i)
+      text += (i ? ", " : "") + items[i];
+    return text + "]";
   }
 } // namespace FoslsContact
 

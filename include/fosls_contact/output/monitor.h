@@ -6,6 +6,7 @@
 
 #include <fosls_contact/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
+#include <fosls_contact/solvers/iteration_observer.h>
 
 #include <string>
 #include <vector>
@@ -26,14 +27,14 @@ namespace FoslsContact
   };
 
   /**
-   * The one place where solvers report: every solver calls report() after
-   * each iteration, and the monitor computes J and its parts, the
-   * correction, the rate, the active set and the violation, prints one
-   * line, decides whether to stop, and later writes convergence.csv.
-   * Solvers therefore never print on their own and all stop by the same
-   * rule.
+   * The one place where solvers report (their IterationObserver): every
+   * solver calls report() after each iteration, and the monitor computes J
+   * and its parts, the correction, the rate, the active set and the
+   * violation, prints one line, decides whether to stop, and later writes
+   * convergence.csv. Solvers therefore never print on their own and all
+   * stop by the same rule.
    */
-  class Monitor
+  class Monitor : public IterationObserver
   {
   public:
     Monitor(const ConstrainedQP &        qp,
@@ -42,19 +43,19 @@ namespace FoslsContact
             const std::string &          solver_name);
 
     /** Record the starting iterate as iteration 0. */
-    void start(const LevelVector &x);
+    void start(const LevelVector &x) override;
 
     /**
      * Record iteration @p x (after @p x_old); print; return true when the
      * stopping criterion is met or the iteration limit is reached
      * (converged() tells which).
      */
-    bool report(const LevelVector &x, const LevelVector &x_old);
+    bool report(const LevelVector &x, const LevelVector &x_old) override;
 
-    /** A solver found J(new) > J(old) at a sub-step. */
-    void note_energy_increase() { ++n_energy_increases; }
+    /** A solver found J(new) > J(old) at @p n sub-steps. */
+    void note_energy_increases(const unsigned int n) override { n_energy_increases += n; }
     /** A solver applied @p n multigrid cycles (on the finest level). */
-    void note_cycles(const unsigned int n) { n_cycles += n; }
+    void note_cycles(const unsigned int n) override { n_cycles += n; }
     unsigned int cycles() const { return n_cycles; }
     /**
      * Mean error reduction per cycle over the run:
@@ -62,15 +63,18 @@ namespace FoslsContact
      */
     double rate_per_cycle() const;
 
-    /** A solver had to shorten a coarse correction to stay feasible. */
-    void note_feasibility_damping() { ++n_feasibility_dampings; }
+    /** A solver had to shorten @p n coarse corrections to stay feasible. */
+    void note_feasibility_dampings(const unsigned int n) override
+    {
+      n_feasibility_dampings += n;
+    }
 
     /**
      * For solvers that detect convergence themselves (the active set
      * method at its KKT point, the multigrid on one level): stop_reason()
      * is then "exact".
      */
-    void set_converged()
+    void set_converged() override
     {
       has_converged = true;
       reason        = "exact";
@@ -86,14 +90,14 @@ namespace FoslsContact
      * stall_excess times the iterations left to reach the stopping rule's
      * target. Such a run ends as not converged, stop_reason() "stalled".
      */
-    void enable_stall_detection() { detect_stalls = true; }
+    void enable_stall_detection() override { detect_stalls = true; }
 
     unsigned int energy_increases() const { return n_energy_increases; }
     /** Whether the run stopped at the round-off floor of the corrections. */
     bool stopped_at_round_off() const { return at_floor; }
     unsigned int feasibility_dampings() const { return n_feasibility_dampings; }
     unsigned int iterations() const { return history.size() - 1; }
-    bool         converged() const { return has_converged; }
+    bool         converged() const override { return has_converged; }
     /**
      * Why the run stopped: "tolerance", "discretization accuracy" (the
      * stopping criteria), "round-off floor" (the corrections reached it),
@@ -126,6 +130,20 @@ namespace FoslsContact
     void set_functional_unit(const double factor) { functional_unit = factor; }
 
   private:
+    /**
+     * The record of iteration @p x (after @p x_old), appended to the
+     * history; the active set's last change.
+     */
+    const IterationRecord &record(const LevelVector &x, const LevelVector &x_old);
+    /**
+     * Whether the last correction is at the round-off floor of the
+     * corrections at @p x (ConstrainedQP::round_off_correction()), with the
+     * rate @p rho and the error factor @p factor = max(1, rho/(1 - rho)),
+     * or the corrections stagnate above it. Sets the record's round-off.
+     */
+    bool at_round_off_floor(const LevelVector &x, const double rho, const double factor);
+    /** The stopping criterion "discretization accuracy" on the history. */
+    bool at_discretization_accuracy() const;
     /** The stall test of enable_stall_detection() on the history. */
     bool detect_stall();
 

@@ -3,7 +3,8 @@
 
 #include <deal.II/lac/sparse_matrix.h>
 
-#include <fosls_contact/discretization/discretization.h>
+#include <fosls_contact/qp/algebraic_level.h>
+#include <fosls_contact/qp/dof_role.h>
 #include <fosls_contact/qp/level_algebra.h>
 
 namespace FoslsContact
@@ -63,7 +64,7 @@ namespace FoslsContact
    * Distributed over the processes of the level (LevelVector): the
    * vectors and the roles in local indices, the matrices as local matrices
    * with the owned rows (and, for A, the ghost rows of the vertex patches,
-   * LevelData::sparsity). Every function that returns a number (J, norms,
+   * AlgebraicLevel::sparsity). Every function that returns a number (J, norms,
    * counts, residuals) returns the value over all processes.
    */
   struct ConstrainedQP
@@ -80,9 +81,9 @@ namespace FoslsContact
     SparseMatrix<double> matrix;
     SparsityPattern      sparsity;
     /**
-     * The DoF coupling pattern of the level (set by reinit()), which holds
-     * A's pattern: the direct solver factorizes on it (see
-     * SparseDirectSolver::initialize()).
+     * The DoF coupling pattern of the level (AlgebraicLevel::sparsity, set
+     * by reinit()), which holds A's pattern: the direct solver factorizes
+     * on it (see SparseDirectSolver::initialize()).
      */
     const SparsityPattern *coupling_sparsity = nullptr;
     /** The level's partitioner: owned and ghost DoFs. */
@@ -119,9 +120,12 @@ namespace FoslsContact
     LevelVector          fixed_values;
     LevelVector          upper_bounds;
 
-    /** Size the matrices on @p sparsity and copy roles and bounds. */
-    template <int dim>
-    void reinit(const LevelData<dim> &level);
+    /**
+     * Size the matrices on the level's coupling pattern and copy its
+     * roles, fixed values and bounds (a LevelData of the discretization is
+     * an AlgebraicLevel).
+     */
+    void reinit(const AlgebraicLevel &level);
 
     /** The number of DoFs (all processes). */
     types::global_dof_index size() const { return rhs.size(); }

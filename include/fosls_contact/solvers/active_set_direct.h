@@ -24,12 +24,10 @@ namespace FoslsContact
   class ActiveSetDirect : public QPSolver
   {
   public:
-    void solve(const ConstrainedQP &qp,
-               LevelVector &        x,
-               Monitor &            monitor) override;
+    void solve(const ConstrainedQP &qp, LevelVector &x, IterationObserver &observer) override;
 
     /**
-     * The same method without a monitor, for small problems (the coarsest
+     * The same method without an observer, for small problems (the coarsest
      * level of the multigrid method, on one process). DoFs with a zero
      * diagonal are treated as fixed at their value in @p x. Returns whether
      * the active set settled within @p max_steps.
@@ -46,7 +44,7 @@ namespace FoslsContact
     {
       converged,   ///< the active set repeated in consecutive steps
       cycling,     ///< an earlier active set came back (iterate() only)
-      out_of_steps ///< the step limit (or the monitor's) was reached
+      out_of_steps ///< the step limit (or the observer's) was reached
     };
 
     /**
@@ -66,18 +64,18 @@ namespace FoslsContact
     /**
      * The method, shared by solve() and solve_quietly(): iterate(), and
      * primal_active_set() from its last iterate if it cycles. Reports
-     * every step to @p monitor if there is one.
+     * every step to @p observer if there is one.
      */
     static Outcome run(const Problem &     problem,
                        LevelVector &       x,
                        const unsigned int  max_steps,
-                       Monitor *           monitor);
+                       IterationObserver * observer);
 
     /** The primal-dual active set method. */
     static Outcome iterate(const Problem &     problem,
                            LevelVector &       x,
                            const unsigned int  max_steps,
-                           Monitor *           monitor);
+                           IterationObserver * observer);
 
     /**
      * The fallback where iterate() cycles: a primal active set method
@@ -96,7 +94,7 @@ namespace FoslsContact
     static Outcome primal_active_set(const Problem &     problem,
                                      LevelVector &       x,
                                      const unsigned int  max_steps,
-                                     Monitor *           monitor);
+                                     IterationObserver * observer);
   };
 } // namespace FoslsContact
 

@@ -21,7 +21,7 @@ namespace FoslsContact
    * - normal stress, per coarse contact face: the minimum over its sons
    *   (eq. 30), divided by the face's entry of @p face_scale (>= 1: a
    *   son that carries the flux of truncated brothers moves by that factor
-   *   times the coarse value, MonotoneMultigrid::reroute_flux()).
+   *   times the coarse value, FluxRerouting::face_scale()).
    *
    * The work is done face by face (FaceRelation): every coarse contact
    * face, owned by one process, gives the face's value and one value per

@@ -25,8 +25,8 @@ namespace FoslsContact
    * linear cycle) solves M c = g with the Cholesky factor of M; one with a
    * finite bound uses a BoxQP (the inverse and an active set method). Each
    * is made when first needed for the current matrix: on the square's
-   * level 2 (100 DoFs that move) the factor took about 0.1 ms and the
-   * inverse 0.65 ms, by hand, and a linear visit costs about the same with
+   * level 2 (100 DoFs that move) the factor takes about 0.1 ms and the
+   * inverse 0.65 ms, and a linear visit costs about the same with
    * either (two triangular solves against one product with the inverse).
    * M is positive definite in exact arithmetic, but should LAPACK refuse
    * the factor (a pivot <= 0 in floating point), the linear visits go to

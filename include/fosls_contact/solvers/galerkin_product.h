@@ -30,7 +30,7 @@ namespace FoslsContact
    * (with several processes, the partition fixes the order of the parts).
    *
    * The coarse operator is stored on the coupling pattern of the coarse
-   * level's cells (LevelData::sparsity): a coarse basis function
+   * level's cells (AlgebraicLevel::sparsity): a coarse basis function
    * prolongates to fine functions inside the coarse cells at its DoF, so
    * two coarse DoFs that share no coarse cell have an exact zero (checked:
    * a nonzero outside that pattern is an error).
@@ -66,6 +66,19 @@ namespace FoslsContact
     void Tvmult(LevelVector &dst, const LevelVector &src) const;
 
   private:
+    /** transpose_start, transpose_row and transpose_position of @p pattern. */
+    void transpose_pattern(const SparsityPattern &pattern, const unsigned int n_owned);
+    /** send_to and receive_from. Collective. */
+    void set_up_ghost_messages(const Utilities::MPI::Partitioner &coarse_partitioner,
+                               const SparsityPattern &            coarse_pattern);
+    /** Add row @p j of P^T (A P) to the dense @p row. */
+    void row_of_result(const unsigned int j, std::vector<double> &row) const;
+    /**
+     * Send the parts of the ghost rows to their owners and add the parts
+     * of the others to the owned rows of @p galerkin. Collective.
+     */
+    void add_ghost_parts(SparseMatrix<double> &galerkin);
+
     /** The values of the last P, in the order of its pattern. */
     std::vector<double>       P_values;
     /**

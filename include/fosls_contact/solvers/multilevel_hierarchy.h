@@ -128,7 +128,7 @@ namespace FoslsContact
      * cell of the level, over all processes. Relaxing color by color keeps
      * the order of every pair of patches the matrix of the level can
      * couple (its entries lie on the coupling pattern of the level's
-     * cells: the Galerkin operators too, see MonotoneMultigrid), so the
+     * cells: the Galerkin operators too, see LevelOperators), so the
      * colored sweep is the sequential sweep in patch order, for any number
      * of processes and threads.
      */
@@ -172,6 +172,19 @@ namespace FoslsContact
                    const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner);
 
   private:
+    /** The rotated prolongation from level @p l - 1 to @p l. */
+    void rotate_prolongation(const unsigned int l, const LevelTransfer<dim> &transfer);
+    /** The vertex patches of level @p l relaxed here, and their colors. Collective. */
+    void find_patches(const unsigned int l);
+    /** The contact relations and rerouting entries of level @p l. */
+    void relate_contact_faces(const unsigned int l);
+    /** The FaceRelation of contact face @p f of the coarse @p cell. */
+    template <typename Iterator>
+    FaceRelation face_relation(const Iterator &      cell,
+                               const unsigned int    f,
+                               const LevelData<dim> &coarse,
+                               const LevelData<dim> &fine) const;
+
     const Discretization<dim> &discretization;
     const unsigned int         finest;
     std::vector<std::unique_ptr<SparsityPattern>>      rotated_sparsity;

@@ -1,15 +1,15 @@
 #ifndef fosls_contact_solvers_patch_smoother_h
 #define fosls_contact_solvers_patch_smoother_h
 
-#include <deal.II/base/aligned_vector.h>
-#include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/multigrid/mg_smoother.h>
 
-#include <fosls_contact/discretization/discretization.h>
-#include <fosls_contact/solvers/box_qp.h>
+#include <fosls_contact/qp/level_algebra.h>
+#include <fosls_contact/solvers/packed_patches.h>
+#include <fosls_contact/solvers/solver_statistics.h>
 
 #include <atomic>
-#include <cstdint>
+#include <memory>
+#include <vector>
 
 namespace FoslsContact
 {
@@ -17,27 +17,32 @@ namespace FoslsContact
    * Projected relaxation over Arnold-Falk-Winther vertex patches, as an
    * MGSmoother: smooth(level, v, r) minimizes 1/2 v^T A v - r^T v, patch
    * after patch, exactly within the obstacles v <= ub set with
-   * set_obstacles() (paper eqs. 19-24). The patch spans the vertex's
-   * displacement and the fluxes (all stress rows) of the faces at the
-   * vertex, which is what makes relaxation effective for the large
-   * divergence-free part of H(div) (Arnold, Falk, Winther).
+   * set_obstacles() (paper eqs. 19-24), MGSmoother::steps times, forward
+   * in the patch order or, with MGSmoother::transpose, backward (the
+   * transpose of a Gauss-Seidel sweep; with MGSmoother::symmetric the
+   * direction alternates). The patch spans the vertex's displacement and
+   * the fluxes (all stress rows) of the faces at the vertex, which is what
+   * makes relaxation effective for the large divergence-free part of
+   * H(div) (Arnold, Falk, Winther).
    *
-   * The patch matrices and their inverses are set up once per level
-   * matrix (initialize_level), which happens only when a Galerkin operator
-   * changes, i.e. when the truncation changes.
+   * The patches of every level are packed (PackedPatches) once per level
+   * matrix (initialize_level()), which happens only when a Galerkin
+   * operator changes, i.e. when the truncation changes. A pre- and a
+   * post-smoother share them: PatchSmoother(other, steps, transpose)
+   * makes a smoother on the patches of another, with its own steps and
+   * direction.
    *
    * The sweep is the sequential one in the order of the hierarchy's
-   * patches (MultilevelHierarchy::patches(): backward for post-smoothing),
-   * run in parallel without changing a bit of it: the patches come with
-   * colors (MultilevelHierarchy::patch_colors(), the level scheduling of
-   * that order), two patches the matrix couples keep their order, and the
+   * patches (MultilevelHierarchy::patches()), run in parallel without
+   * changing a bit of it: the patches come with colors
+   * (MultilevelHierarchy::patch_colors(), the level scheduling of that
+   * order), two patches the matrix couples keep their order, and the
    * patches of one color, which are independent, are relaxed concurrently
-   * by the threads of MultithreadInfo. The iterates are therefore the
-   * same for any number of threads, and the same as those of the serial
-   * sweep. initialize_level() refuses a matrix that couples two patches of
-   * one color. (A greedy coloring with the fewest colors, i.e. a
-   * multicolor Gauss-Seidel order, was measured too: plain V(3,3) on the
-   * square, lambda = 1, asymptotic rate 0.67-0.71 instead of 0.27-0.35.)
+   * by the threads of MultithreadInfo. The iterates are therefore the same
+   * for any number of threads, and the same as those of the serial sweep.
+   * (A greedy coloring with the fewest colors, i.e. a multicolor
+   * Gauss-Seidel order, was measured too: plain V(3,3) on the square,
+   * lambda = 1, asymptotic rate 0.67-0.71 instead of 0.27-0.35.)
    *
    * Distributed: a process relaxes every patch with a DoF it owns, so a
    * patch at the border of its cells is relaxed by each process that owns
@@ -52,13 +57,25 @@ namespace FoslsContact
   class PatchSmoother : public MGSmoother<LevelVector>
   {
   public:
-    explicit PatchSmoother(const unsigned int n_levels);
+    /**
+     * A smoother for levels 0 .. @p n_levels - 1 (no patches yet) with
+     * @p steps sweeps, backward if @p transpose; the wall time of its
+     * sweeps is added to @p time if given.
+     */
+    PatchSmoother(const unsigned int n_levels,
+                  const unsigned int steps     = 1,
+                  const bool         transpose = false,
+                  SectionTime *      time      = nullptr);
+    /**
+     * A smoother on the patches, obstacles and roles of @p other (what is
+     * set on one, the other sees), with its own @p steps and direction.
+     */
+    PatchSmoother(const PatchSmoother &other, const unsigned int steps, const bool transpose);
 
     /**
-     * Factorize the patches of level @p l for @p matrix (whose rows are
-     * copied: a changed matrix needs a new call). Fixed DoFs and DoFs with
-     * a zero diagonal (switched off by the truncation of the finer level)
-     * are left out of every patch.
+     * Pack the patches of level @p l for @p matrix (PackedPatches::build()).
+     * The level relaxes with the obstacles of the next set_obstacles() and
+     * the roles @p role.
      */
     void initialize_level(const unsigned int                                      l,
                           const SparseMatrix<double> &                            matrix,
@@ -69,119 +86,65 @@ namespace FoslsContact
                           const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner);
 
     /**
-     * The roles of the linear problem of a Newton step on level @p l (set
-     * up with initialize_level for the constrained problem): a bounded DoF
-     * is either fixed (it stays where it is) or free (no bound). Only the
-     * patches with a bounded DoF differ from the constrained smoother, so
-     * only they get a second inverse, of the patch matrix without the
-     * fixed DoFs: O(contact patches) work and memory instead of a second
-     * smoother of the whole level.
+     * The roles of the linear problem of a Newton step on level @p l
+     * (PackedPatches::set_linear_roles()).
      */
     void set_linear_roles(const unsigned int l, const std::vector<DoFRole> &linear_role);
     /**
      * Relax level @p l with the linear roles (true) or with the obstacles
      * of set_obstacles() (false).
      */
-    void use_linear_roles(const unsigned int l, const bool linear)
-    {
-      levels[l].linear = linear;
-    }
+    void use_linear_roles(const unsigned int l, const bool linear);
 
     /** Obstacles of level @p l: the upper bounds of bounded DoFs. */
     void set_obstacles(const unsigned int l, const LevelVector &upper_bounds);
-    /** Forward (pre-smoothing) or backward (post-smoothing) patch order. */
-    void set_backward(const bool backward) { this->backward = backward; }
 
     /**
      * The sweeps on level @p level: @p v changes on the owned DoFs and the
      * ghost DoFs of the patches relaxed here; its ghost values are valid
      * afterwards. Collective.
      */
-    void smooth(const unsigned int level,
-                LevelVector &      v,
-                const LevelVector &r) const override;
+    void smooth(const unsigned int level, LevelVector &v, const LevelVector &r) const override;
     void clear() override;
 
     /** Patch steps whose objective change was positive beyond round-off. */
-    unsigned int energy_increases() const { return n_increases; }
+    unsigned int energy_increases() const { return shared->n_increases; }
 
     /** Number of colors of level @p l, over all processes. */
     unsigned int n_colors(const unsigned int l) const
     {
-      return levels[l].color_start.empty() ? 0 : levels[l].color_start.size() - 1;
+      return shared->levels[l].n_colors();
     }
 
   private:
-    /**
-     * The patches of one level, packed. A sweep streams through these
-     * arrays in order, and from level 8 of the square on they no longer
-     * fit in cache (240 MB at level 9, against 110 MB for the matrix), so
-     * their size is the time of a sweep there:
-     * - patch k has n = start[k+1] - start[k] DoFs; its neighbourhood, the
-     *   columns of its rows, is neighbors[neighbor_start[k] ..
-     *   neighbor_start[k+1]), the patch DoFs first;
-     * - its rows are copied next to each other (row_start, columns,
-     *   values; a row of a face DoF appears in the two patches of the
-     *   face's end points), so that the patch residual reads one
-     *   contiguous block instead of jumping through the sparse matrix. The
-     *   columns are 16-bit positions in the neighbourhood, whose values a
-     *   relaxation gathers first (against 32-bit DoF indices: 15% less
-     *   data);
-     * - the inverse of its matrix is stored as its upper triangle by rows
-     *   at inverse[inverse_start[k] ..) (n (n+1)/2 entries instead of n^2);
-     * - only patches with a bounded DoF can hit an obstacle, so only they
-     *   keep a BoxQP for the constrained case (box_qp[k], an index into
-     *   qps).
-     *
-     * The patches are packed color by color: those of color k are
-     * color_start[k] .. color_start[k+1]. The large arrays are
-     * AlignedVectors, whose resize_fast() leaves new entries uninitialized
-     * for the parallel fill of initialize_level().
-     */
-    struct Level
+    /** What the smoothers on the same patches share. */
+    struct Shared
     {
-      const LevelVector *                  obstacles = nullptr;
-      /** The patch's energy check counts here (see the class doc). */
-      std::vector<bool>                    counted;
-      std::vector<unsigned int>            start;
-      std::vector<std::size_t>             inverse_start;
-      std::vector<std::size_t>             neighbor_start;
-      AlignedVector<types::global_dof_index> neighbors;
-      std::vector<bool>                    bounded;
-      AlignedVector<double>                inverse;
-      std::vector<std::size_t>             row_start;
-      AlignedVector<std::uint16_t>         columns;
-      AlignedVector<double>                values;
-      std::vector<unsigned int>            box_qp;
-      std::vector<BoxQP>                   qps;
-      std::vector<unsigned int>            color_start;
-      /**
-       * Linear roles (set_linear_roles): for a patch with a bounded DoF,
-       * linear_patch[box_qp[k]] has the local indices of the DoFs that
-       * move and the inverse of their block of the patch matrix.
-       */
-      struct LinearPatch
-      {
-        std::vector<unsigned int> moving;
-        std::vector<double>       inverse;
-      };
-      std::vector<LinearPatch> linear_patch;
-      bool                     linear = false;
+      explicit Shared(const unsigned int n_levels)
+        : levels(n_levels)
+        , obstacles(n_levels, nullptr)
+        , linear(n_levels, false)
+      {}
+      std::vector<PackedPatches>        levels;
+      std::vector<const LevelVector *>  obstacles;
+      std::vector<bool>                 linear;
+      std::atomic<unsigned int>         n_increases{0};
     };
 
+    /** One sweep over the colors of level @p l, backward if @p backward. */
+    void sweep(const unsigned int l, LevelVector &v, const LevelVector &r, const bool backward) const;
     /**
-     * Relax the packed patches [begin, end) of @p level once (they are of
-     * one color, so their order does not matter).
+     * Relax the packed patches [begin, end) of level @p l once (they are
+     * of one color, so their order does not matter).
      */
-    void relax_patches(const Level &      level,
+    void relax_patches(const unsigned int l,
                        const unsigned int begin,
                        const unsigned int end,
                        LevelVector &      v,
                        const LevelVector &r) const;
 
-    std::vector<Level>                levels;
-    bool                              backward    = false;
-    mutable std::atomic<unsigned int> n_increases = 0;
+    std::shared_ptr<Shared> shared;
+    SectionTime *           time;
   };
 } // namespace FoslsContact
 

@@ -27,9 +27,7 @@ namespace FoslsContact
       : order(std::move(order))
     {}
 
-    void solve(const ConstrainedQP &qp,
-               LevelVector &        x,
-               Monitor &            monitor) override;
+    void solve(const ConstrainedQP &qp, LevelVector &x, IterationObserver &observer) override;
 
   private:
     std::vector<types::global_dof_index> order;

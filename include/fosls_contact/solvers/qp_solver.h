@@ -1,18 +1,17 @@
 #ifndef fosls_contact_solvers_qp_solver_h
 #define fosls_contact_solvers_qp_solver_h
 
-#include <fosls_contact/output/monitor.h>
 #include <fosls_contact/qp/constrained_qp.h>
-
-#include <map>
-#include <string>
+#include <fosls_contact/solvers/iteration_observer.h>
+#include <fosls_contact/solvers/solver_statistics.h>
 
 namespace FoslsContact
 {
   /**
    * Interface of the solvers for a ConstrainedQP. @p x enters as the
    * starting guess (it is projected to the feasible set first) and leaves
-   * as the solution; every iteration is reported to @p monitor.
+   * as the solution; every iteration is reported to @p observer, which
+   * decides when to stop.
    */
   class QPSolver
   {
@@ -20,16 +19,10 @@ namespace FoslsContact
     virtual ~QPSolver() = default;
     virtual void solve(const ConstrainedQP &qp,
                        LevelVector &        x,
-                       Monitor &            monitor) = 0;
+                       IterationObserver &  observer) = 0;
 
-    /** Wall time and number of calls of one part of solve(). */
-    struct SectionTime
-    {
-      double       seconds = 0;
-      unsigned int calls   = 0;
-    };
-    /** The wall time of the parts of solve() so far, by name (none here). */
-    virtual std::map<std::string, SectionTime> section_times() const { return {}; }
+    /** The figures of the solves so far (none here). */
+    virtual SolverStatistics statistics() const { return {}; }
   };
 } // namespace FoslsContact
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# Hard cases (issue "hard cases stay numerically stable"): the weights of
+# The weights of
 # the functional, on the square (prm/square.prm).
 #  - C_eq = 1, 10, 1e2, 1e3, 1e4 (5 levels, C_const = 1, C_compl = 0.1):
 #    the default solver and the plain cycle (Krylov steps = 0) converge

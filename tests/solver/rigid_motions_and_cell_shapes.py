@@ -1,4 +1,4 @@
-# The checks of a scene before the solve (found by probing):
+# The checks of a scene before the solve:
 #  - rigid motions (FoslsProblem::check_rigid_motions): refused where the
 #    boundary conditions leave one free, accepted where the fixed DoFs hold
 #    every one, also when they hold every DoF of a mode (a one-cell square

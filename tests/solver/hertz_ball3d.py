@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# Hard cases: 3D Hertz contact with a contact zone that ends inside the
+# 3D Hertz contact with a contact zone that ends inside the
 # contact boundary. prm/ball3d.prm: the elastic block [-1,1]^2 x [0,1]
 # (mu = lambda = 1) pushed down by 0.05 onto a rigid ball of radius R = 2,
 # 4 levels (27771 DoFs), default solver. Hertz (rigid sphere on an elastic

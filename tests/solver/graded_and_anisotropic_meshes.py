@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# Hard cases (issue "hard cases stay numerically stable"): bad meshes.
+# Bad meshes.
 #  - Graded half-disc meshes (prm/hertz.prm, 2 levels as in paper section
 #    7, lambda = 1 and inf): Geometry/Grading = 1.94779, 2.38882, 3.20853
 #    give coarse h_max/h_min (summary.json h_ratio_coarse) = 3.1688,

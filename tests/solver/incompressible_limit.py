@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# Hard cases (issue "hard cases stay numerically stable"): compressible to
+# Compressible to
 # incompressible material. The square (prm/square.prm, 5 levels, 1666
 # DoFs) with lambda = 1, 1e4, 1e8 and inf, default solver, from the
 # default start (coarse solution) and from a zero start. Checks per run:

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# Hard cases (issue "hard cases stay numerically stable"): a deep hierarchy
+# A deep hierarchy
 # in 2D: the square (prm/square.prm, default solver) on 6, 7, 8 and 9
 # levels (6402 to 395266 DoFs, a hierarchy of 9 levels). Measured (Nov
 # 2026, 2 cores, another job sharing the machine): the whole test 26 s, the

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# Hard cases (issue "hard cases stay numerically stable"): 3D. The unit
+# A 3D problem. The unit
 # cube on a rigid foundation (prm/cube3d.prm, pushed down by 0.01), default
 # solver, on 4 levels (7371 DoFs) and 5 levels (53907 DoFs; measured 10 s
 # wall on 2 cores, so it is part of the default run). The definiteness

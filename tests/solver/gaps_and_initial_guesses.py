@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# Hard cases (issue "hard cases stay numerically stable"): obstacles and
+# Obstacles and
 # starting guesses, on the square (prm/square.prm, 5 levels, 1666 DoFs,
 # pushed down by 0.01), default solver, each compared with the active set
 # solver (the reference) or a formula:
@@ -19,7 +19,7 @@
 #    is below the push), and a Hertz-like cylinder of radius R = 0.5 below
 #    the square, Gap = R - sqrt(R^2 - (x - 0.5)^2) (contact in the middle
 #    only; R = 1 on 5 levels and the half disc on 4 levels are test
-#    hard_partial_contact).
+#    partial_contact_zones).
 # Checks per run: converged within 20 iterations (measured 4-5), no NaN/Inf, energy_increases == 0, every
 # iterate feasible, and the reference's KKT point: force and J to 1e-8
 # relative (measured <= 3.8e-9), KKT residual < 1e-8, same number of

@@ -1,0 +1,113 @@
+#ifndef fosls_contact_solvers_newton_step_h
+#define fosls_contact_solvers_newton_step_h
+
+#include <fosls_contact/parameters.h>
+#include <fosls_contact/qp/constrained_qp.h>
+#include <fosls_contact/solvers/monotone_cycle.h>
+#include <fosls_contact/solvers/patch_smoother.h>
+#include <fosls_contact/solvers/solver_statistics.h>
+
+#include <vector>
+
+namespace FoslsContact
+{
+  /**
+   * One step of truncated nonsmooth Newton multigrid with conjugate
+   * gradients (Solver/Krylov steps > 0, the default solver):
+   *  1. projected pre-smoothing on the finest level;
+   *  2. the Newton direction on the inactive set of the result (a DoF at
+   *     its bound whose multiplier (b - A x)_i is negative counts as
+   *     inactive, so that the direction can release it): CG steps
+   *     preconditioned by the linear truncated cycle (MonotoneCycle with
+   *     linear = true), until the residual is cg_reduction times that of
+   *     the first round (at most Krylov steps). A free DoF that the
+   *     direction would push past its bound is instead moved exactly to
+   *     its bound and the linear problem solved again without it, as in a
+   *     primal-dual active set step (at most max_rounds rounds);
+   *  3. a line search that takes the better of two feasible steps;
+   *  4. projected post-smoothing.
+   * J never increases.
+   *
+   * Why: the contact constraints of this discretization bound u.n at
+   * vertices and (sigma n).n on faces, so a contact zone of a few faces
+   * leaves faces where neither is active; the complementarity term couples
+   * them only weakly, the contact block is nearly singular, and the
+   * truncated coarse spaces cannot represent the pressure on a contact
+   * zone smaller than a coarse face: the plain cycle stalls (half disc,
+   * doc/results.md). CG removes these few near-singular modes in a handful
+   * of steps.
+   */
+  template <int dim>
+  class NewtonStep
+  {
+  public:
+    NewtonStep(const Parameters::Solver &parameters,
+               PatchSmoother &           pre_smoother,
+               const PatchSmoother &     post_smoother,
+               MonotoneCycle<dim> &      cycle,
+               MultigridCounters &       counters,
+               const unsigned int        finest_level);
+
+    /** One step from @p x; returns the number of linear cycles applied. */
+    unsigned int apply(const ConstrainedQP &qp, LevelVector &x);
+
+    /** The finest level's operator changed: its linear roles are gone. */
+    void new_fine_operator() { linear_role_used.clear(); }
+
+    /**
+     * The most rounds of the Newton direction. Each round fixes at least
+     * one more DoF, so the rounds end; they are capped all the same. A cap
+     * of 3 rounds was too low where the contact zone grows by a vertex per
+     * round: half disc, 5 levels, 20 iterations (264 cycles) against 6
+     * (111 cycles) with up to 10 rounds, the same with 30.
+     */
+    static constexpr unsigned int max_rounds = 20;
+    /**
+     * The linear solves of all rounds stop at this times the norm of the
+     * first round's right-hand side (the residual on the free DoFs), not
+     * of their own: a DoF moved to its bound puts a large, local residual
+     * next to it, which one cycle removes, and a tolerance relative to
+     * that norm stopped CG after 1 step with the smooth part of the error
+     * untouched. The direction was then so far off that the best step
+     * along it was 0.2 d, every iteration (the square [-1,1]x[0,1] with
+     * gap 0.02 - 0.015 x^2, 5 levels, stalled at rate 0.993 with J 2.6
+     * times its minimum after 200 iterations; with this tolerance, 3
+     * iterations).
+     */
+    static constexpr double cg_reduction = 1e-3;
+
+  private:
+    /**
+     * The roles of the linear problem at @p x with the residual
+     * @p residual: a bounded DoF is fixed where its bound holds it (at the
+     * bound with a multiplier mu_i = (b - A x)_i >= 0), else free.
+     */
+    void set_linear_roles(const ConstrainedQP &qp,
+                          const LevelVector &  x,
+                          const LevelVector &  residual);
+    /**
+     * The Newton direction @p d at @p x (the rounds of PCG); returns the
+     * number of linear cycles applied.
+     */
+    unsigned int direction(const ConstrainedQP &qp,
+                           const LevelVector &  x,
+                           const LevelVector &  residual,
+                           LevelVector &        d);
+    /** x moves along @p d by the better of the two feasible steps. */
+    void line_search(const ConstrainedQP &qp,
+                     LevelVector &        x,
+                     const LevelVector &  d,
+                     const LevelVector &  residual) const;
+
+    const Parameters::Solver &parameters;
+    PatchSmoother &           pre_smoother;
+    const PatchSmoother &     post_smoother;
+    MonotoneCycle<dim> &      cycle;
+    MultigridCounters &       counters;
+    const unsigned int        finest;
+    /** The linear roles, and those the smoother was last set up with. */
+    std::vector<DoFRole> linear_role, linear_role_used;
+  };
+} // namespace FoslsContact
+
+#endif

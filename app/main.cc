@@ -85,16 +85,14 @@ main(int argc, char *argv[])
                 dealii::MultithreadInfo::set_thread_limit(parameters.solver.threads);
               std::ostringstream used;
               prm.print_parameters(used, dealii::ParameterHandler::PRM);
-              const bool converged =
+              const std::string not_converged =
                 parameters.geometry.dimension == 2 ?
                   FoslsProblem<2>(parameters, used.str()).run() :
                   FoslsProblem<3>(parameters, used.str()).run();
-              if (!converged)
+              if (!not_converged.empty())
                 {
                   if (first_rank)
-                    ErrorLine::print("fosls-contact: not converged within 'Solver/Max "
-                                     "iterations' = " +
-                                     std::to_string(parameters.solver.max_iterations) +
+                    ErrorLine::print("fosls-contact: " + not_converged +
                                      "; the output files are written, summary.json has "
                                      "\"converged\": false");
                   status = CommandLine::not_converged;

@@ -20,5 +20,7 @@ if [[ "${1:-}" != "--report" ]]; then
   "$py" "$root/bench/run_cases.py" | tee "$root/bench/results/run_cases.log"
   # where the cycles' time goes, level by level (doc/level_costs.md)
   "$py" "$root/bench/level_costs.py" | tee "$root/bench/results/level_costs.log"
+  # pictures of solutions (doc/figures/solution_*.png)
+  "$py" "$root/bench/figures.py"
 fi
 "$py" "$root/bench/make_report.py"

@@ -269,6 +269,23 @@ def main():
             {"group": "hertz", "config": "default", "lambda": lam, "level": 4,
              "grading": 2}, timeout=120)
 
+    # c3. the steel roller in mm/N/MPa
+    run("steel_cylinder", "steel_cylinder.prm", {},
+        {"group": "steel", "config": "default", "lambda": "", "level": 4}, timeout=300)
+
+    # d2. the plain V(3,3)'s rate on the square against what the paper
+    # varies: the projection (the paper's c) and the complementarity weight
+    for lam in ["1", "inf"]:
+        for proj in "bc":
+            for c_compl in ["0", "0.1", "0.2"]:
+                run(f"rates_lam{lam}_{proj}_C{c_compl}", "square.prm",
+                    {"Geometry/Levels": "7", "Material/lambda": lam,
+                     "Solver/Krylov steps": "0", "Solver/Cycle": "V",
+                     "Solver/Projection": proj,
+                     "Functional weights/C_compl": c_compl},
+                    {"group": "rates", "config": "plainV", "lambda": lam, "level": 7,
+                     "projection": proj, "grading": c_compl})
+
     # c2. 3D Hertz: the block on the ball (level 5: 209139 DoFs, 8
     # iterations, about 200 s and 3.5 GB on this machine)
     for L in [3, 4, 5]:

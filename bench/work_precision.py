@@ -232,6 +232,8 @@ def case(scene, cfg, level, group):
     sets = dict(sets)
     sets.update({"Geometry/Levels": str(level), "Output/Directory": out,
                  "Output/Write vtu": "false", "Output/Verbose": "false"})
+    if prm == "hertz.prm":
+        sets.setdefault("Geometry/Grading", "1")  # the study's ungraded half disc
     cmd = [BIN, os.path.join(ROOT, "prm", prm)]
     for k, v in sets.items():
         cmd += ["--set", f"{k}={v}"]

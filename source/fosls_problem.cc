@@ -2,6 +2,7 @@
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/utilities.h>
 
+#include <fosls_contact/assembly/error_indicators.h>
 #include <fosls_contact/assembly/fosls_assembler.h>
 #include <fosls_contact/build_info.h>
 #include <fosls_contact/fosls_problem.h>
@@ -469,8 +470,20 @@ namespace FoslsContact
           << monitor->iterations() << " iterations"
           << (monitor->stopped_at_round_off() ?
                 " (corrections at their round-off floor)" :
-                "")
-          << std::endl;
+                "");
+    if (monitor->stop_reason() == "stalled")
+      pcout << ": stalled at a rate of " << std::fixed << std::setprecision(4)
+            << monitor->asymptotic_rate() << " per iteration, its error estimate "
+            << std::scientific << std::setprecision(1) << monitor->stalled_error_ratio()
+            << " times the target of "
+            << (parameters.solver.stopping == Parameters::Solver::Stopping::tolerance ?
+                  "Solver/Tolerance" :
+                  "Solver/Discretization fraction")
+            << std::defaultfloat
+            << (parameters.solver.krylov_steps == 0 ?
+                  "; the default solver (Solver/Krylov steps > 0) converges there" :
+                  "; Solver/Type = active set solves the problem exactly");
+    pcout << std::endl;
   }
 
 
@@ -506,6 +519,7 @@ namespace FoslsContact
     summary["iterations"]       = std::to_string(monitor->iterations());
     summary["converged"]        = monitor->converged() ? "true" : "false";
     summary["stopped_at_round_off"] = monitor->stopped_at_round_off() ? "true" : "false";
+    summary["stop_reason"]      = "\"" + monitor->stop_reason() + "\"";
     summary["rate_asymptotic"]  = number(monitor->asymptotic_rate());
     summary["cycles"]           = std::to_string(monitor->cycles());
     summary["rate_per_cycle"]   = number(monitor->rate_per_cycle());
@@ -527,6 +541,14 @@ namespace FoslsContact
     for (unsigned int d = 0; d < dim; ++d)
       f += (d ? ", " : "") + number(force[d]);
     summary["contact_force"]         = f + "]";
+    // the error indicators: the cellwise parts of J (their sum)
+    ErrorIndicators<dim> indicators(*discretization, parameters.weights);
+    indicators.compute(solution);
+    summary["error_indicators"] =
+      "{\"sum\": " + number(J_unit * indicators.total()) +
+      ", \"max\": " + number(std::sqrt(J_unit * indicators.max_squared())) +
+      ", \"cells\": " + std::to_string(discretization->get_triangulation().n_global_active_cells()) +
+      ", \"cells_for_half_of_J\": " + std::to_string(indicators.cells_for_half()) + "}";
     {
       const FieldMaxima maxima   = post.field_maxima(cartesian);
       summary["max_displacement"] = number(maxima.displacement);
@@ -645,14 +667,14 @@ namespace FoslsContact
           pcout << ' ' << std::setprecision(8) << force[d];
         pcout << std::defaultfloat << std::endl;
       }
-    post.write(solution, *monitor, summary, used_parameters, output);
+    post.write(solution, *monitor, summary, used_parameters, indicators, output);
     pcout << "Output written to " << parameters.output.directory << "/"
           << std::endl;
   }
 
 
   template <int dim>
-  bool
+  std::string
   FoslsProblem<dim>::run()
   {
     // an unusable output directory is found before the work, not after it
@@ -691,7 +713,19 @@ namespace FoslsContact
             pcout << std::endl;
           }
       }
-    return monitor->converged();
+    if (monitor->converged())
+      return "";
+    std::ostringstream why;
+    if (monitor->stop_reason() == "stalled")
+      why << "not converged: stalled at a rate of " << std::fixed << std::setprecision(4)
+          << monitor->asymptotic_rate() << " per iteration"
+          << (parameters.solver.krylov_steps == 0 ?
+                " (the default solver, Solver/Krylov steps > 0, converges there)" :
+                "");
+    else
+      why << "not converged within 'Solver/Max iterations' = "
+          << parameters.solver.max_iterations;
+    return why.str();
   }
 
   template class FoslsProblem<2>;

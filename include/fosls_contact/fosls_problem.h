@@ -36,10 +36,11 @@ namespace FoslsContact
 
     /**
      * Run the program: check and lock the output directory, then the data
-     * path; the output files are published when it ends. Returns whether
-     * the solver converged (the files are written either way).
+     * path; the output files are published when it ends. Returns "" if the
+     * solver converged, else why not, in a few words for the one line the
+     * program ends with (the files are written either way).
      */
-    bool run();
+    std::string run();
 
   private:
     void setup();

@@ -8,12 +8,12 @@
 // points exactly on them), so the quarter is a quarter model of the half
 // ball: with the same refinements and the sphere as its manifold it gives
 // the same finest mesh, and a quarter of the contact force
-// (prm/quarter_ball_file.prm, tests/solver/mesh_input.py).
+// (prm/quarter_ball_file.prm, tests/solver/curved_bodies_ball.py).
 //
 //   make_quarter_ball prm/half_ball.prm > prm/meshes/quarter_ball.msh
 //
 // (built with the tests: make make_quarter_ball; the test
-// solver/mesh_files_current checks that the committed file is its output)
+// meshes/quarter_ball checks that the committed file is its output)
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/tria.h>
 

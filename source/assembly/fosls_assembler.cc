@@ -34,11 +34,9 @@ namespace FoslsContact
   }
 
 
-  namespace
-  {
-    /** Per-thread evaluators and work arrays of the cell loop. */
-    template <int dim>
-    struct AssemblyScratch
+  /** Per-thread evaluators and work arrays of the cell loop. */
+  template <int dim>
+  struct AssemblyScratch
     {
       AssemblyScratch(const Mapping<dim> &      mapping,
                       const FiniteElement<dim> &fe,
@@ -86,7 +84,7 @@ namespace FoslsContact
     };
 
     /** What one cell adds to the functional (already rotated). */
-    struct AssemblyCopy
+  struct AssemblyCopy
     {
       explicit AssemblyCopy(const unsigned int n)
         : k_eq(n, n)
@@ -109,190 +107,186 @@ namespace FoslsContact
       bool                                 touches_contact = false;
       bool                                 valid           = false;
     };
-  } // namespace
+
+
+  template <int dim>
+  void
+  FoslsAssembler<dim>::cell_terms(const typename DoFHandler<dim>::level_cell_iterator &cell,
+                                  AssemblyScratch<dim> &                              scratch,
+                                  AssemblyCopy &                                      copy) const
+  {
+    const auto &       scene = discretization.get_scene();
+    const unsigned int n     = discretization.get_fe().n_dofs_per_cell();
+    // One Vector extractor per stress row: the Tensor<2> extractor's
+    // divergence is zero for these non-primitive RT components on
+    // deal.II 9.4 (pinned by tests/unit/rt_row_divergence).
+    const FEValuesExtractors::Vector displacement(0);
+    auto &fe_values = scratch.fe_values;
+    auto &k_eq = copy.k_eq, &k_const = copy.k_const;
+    auto &r_eq = copy.r_eq;
+    k_eq             = 0;
+    k_const          = 0;
+    r_eq             = 0;
+    copy.constant_eq = 0;
+    copy.owned       = cell->is_locally_owned_on_level();
+    fe_values.reinit(cell);
+
+    auto &residual   = scratch.residual;
+    auto &divergence = scratch.divergence;
+    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+      {
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            Tensor<2, dim> sigma;
+            for (unsigned int m = 0; m < dim; ++m)
+              {
+                const FEValuesExtractors::Vector row(dim + m * dim);
+                const Tensor<1, dim>             r = fe_values[row].value(i, q);
+                for (unsigned int k = 0; k < dim; ++k)
+                  sigma[m][k] = r[k];
+                divergence[i][m] = fe_values[row].divergence(i, q);
+              }
+            const Tensor<2, dim> eps = fe_values[displacement].symmetric_gradient(i, q);
+            residual[i]              = compliance(sigma, material.mu, material.lambda) - eps;
+          }
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j <= i; ++j)
+            {
+              k_eq(i, j) += weights.c_eq * (divergence[i] * divergence[j]) * JxW;
+              k_const(i, j) += weights.c_const * scalar_product(residual[i], residual[j]) * JxW;
+            }
+        if (scene.has_body_force())
+          {
+            scene.body_force().vector_value(fe_values.quadrature_point(q), scratch.f);
+            Tensor<1, dim> ft;
+            for (unsigned int d = 0; d < dim; ++d)
+              ft[d] = scratch.f[d];
+            for (unsigned int i = 0; i < n; ++i)
+              r_eq(i) -= weights.c_eq * (ft * divergence[i]) * JxW;
+            copy.constant_eq += weights.c_eq * (ft * ft) * JxW;
+          }
+      }
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = i + 1; j < n; ++j)
+        {
+          k_eq(i, j)    = k_eq(j, i);
+          k_const(i, j) = k_const(j, i);
+        }
+  }
+
+
+  template <int dim>
+  void
+  FoslsAssembler<dim>::contact_terms(const typename DoFHandler<dim>::level_cell_iterator &cell,
+                                     AssemblyScratch<dim> &                              scratch,
+                                     AssemblyCopy &                                      copy) const
+  {
+    // Complementarity term on Gamma_C, symmetrized:
+    // C_compl/2 [(u_i.n)(sigma_j n_b.n) + (u_j.n)(sigma_i n_b.n)].
+    const auto &                     scene = discretization.get_scene();
+    const unsigned int               n     = discretization.get_fe().n_dofs_per_cell();
+    const FEValuesExtractors::Vector displacement(0);
+    const double                     c_compl = weights.c_compl;
+    copy.k_compl                             = 0;
+    copy.r_compl                             = 0;
+    copy.touches_contact                     = false;
+    if (!scene.has_contact())
+      return;
+    for (const unsigned int f : cell->face_indices())
+      if (cell->at_boundary(f) && scene.is_contact(cell->face(f)->boundary_id()))
+        {
+          copy.touches_contact = true;
+          auto &fe_face        = scratch.fe_face;
+          fe_face.reinit(cell, f);
+          for (unsigned int q = 0; q < fe_face.n_quadrature_points; ++q)
+            {
+              const Point<dim>     p   = fe_face.quadrature_point(q);
+              const Tensor<1, dim> n_o = scene.obstacle_normal(p);
+              const Tensor<1, dim> n_b = fe_face.normal_vector(q);
+              const double         g   = scene.gap().value(p);
+              const double         JxW = fe_face.JxW(q);
+              auto &               un  = scratch.un;
+              auto &               sn  = scratch.sn;
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  un[i] = fe_face[displacement].value(i, q) * n_o;
+                  Tensor<1, dim> traction;
+                  for (unsigned int m = 0; m < dim; ++m)
+                    traction[m] = fe_face[FEValuesExtractors::Vector(dim + m * dim)].value(i, q) *
+                                  n_b;
+                  sn[i] = traction * n_o;
+                }
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  for (unsigned int j = 0; j < n; ++j)
+                    copy.k_compl(i, j) += 0.5 * c_compl * (un[i] * sn[j] + un[j] * sn[i]) * JxW;
+                  copy.r_compl(i) += 0.5 * c_compl * g * sn[i] * JxW;
+                }
+            }
+        }
+  }
+
+
+  template <int dim>
+  void
+  FoslsAssembler<dim>::rotate(const LevelData<dim> &data, AssemblyCopy &copy) const
+  {
+    // Change of basis R^T K R for DoFs in rotation blocks (section 4.3).
+    const unsigned int n    = copy.dofs.size();
+    const auto &       dofs = copy.dofs;
+    bool               rotated = false;
+    for (unsigned int i = 0; i < n; ++i)
+      rotated |= data.rotation_of_dof[dofs[i]] != numbers::invalid_unsigned_int;
+    if (!rotated)
+      return;
+    FullMatrix<double> R(n, n), tmp(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const unsigned int b = data.rotation_of_dof[dofs[i]];
+        if (b == numbers::invalid_unsigned_int)
+          {
+            R(i, i) = 1.;
+            continue;
+          }
+        const auto &       block = data.rotations[b];
+        const unsigned int ki =
+          std::find(block.dofs.begin(), block.dofs.end(), dofs[i]) - block.dofs.begin();
+        for (unsigned int j = 0; j < n; ++j)
+          {
+            const auto kj = std::find(block.dofs.begin(), block.dofs.end(), dofs[j]);
+            if (kj != block.dofs.end())
+              R(i, j) = block.matrix(ki, kj - block.dofs.begin());
+          }
+      }
+    Vector<double> tmp_v(n);
+    for (FullMatrix<double> *k : {&copy.k_eq, &copy.k_const, &copy.k_compl})
+      {
+        tmp = 0;
+        tmp.triple_product(*k, R, R, true, false);
+        *k = tmp;
+      }
+    for (Vector<double> *r : {&copy.r_eq, &copy.r_compl})
+      {
+        R.Tvmult(tmp_v, *r);
+        *r = tmp_v;
+      }
+  }
 
 
   template <int dim>
   void
   FoslsAssembler<dim>::assemble(const unsigned int level, ConstrainedQP &qp) const
   {
-    const auto &fe      = discretization.get_fe();
-    const auto &scene   = discretization.get_scene();
-    const auto &data    = discretization.level(level);
-    const bool  body    = scene.has_body_force();
-    const bool  contact = scene.has_contact();
-
-    const QGauss<dim>     quadrature(3);
-    const QGauss<dim - 1> face_quadrature(3);
-
-    // One Vector extractor per stress row: the Tensor<2> extractor's
-    // divergence is zero for these non-primitive RT components on
-    // deal.II 9.4 (pinned by tests/unit/rt_row_divergence).
-    const FEValuesExtractors::Vector displacement(0);
-    std::vector<FEValuesExtractors::Vector> row;
-    for (unsigned int m = 0; m < dim; ++m)
-      row.emplace_back(dim + m * dim);
-
-    const unsigned int n = fe.n_dofs_per_cell();
-    const double c_eq = weights.c_eq, c_const = weights.c_const,
-                 c_compl = weights.c_compl;
-
-    using Iterator = typename DoFHandler<dim>::level_cell_iterator;
+    const auto &       fe   = discretization.get_fe();
+    const auto &       data = discretization.level(level);
+    const unsigned int n    = fe.n_dofs_per_cell();
+    using Iterator          = typename DoFHandler<dim>::level_cell_iterator;
 
     // The cell terms, in parallel (WorkStream); the copier adds them to
     // the global matrices one cell after the other in cell order, so the
     // result does not depend on the number of threads.
-    auto assemble_cell = [&](const Iterator &cell, AssemblyScratch<dim> &scratch, AssemblyCopy &copy) {
-      auto &fe_values = scratch.fe_values;
-      auto &k_eq = copy.k_eq, &k_const = copy.k_const, &k_compl = copy.k_compl;
-      auto &r_eq = copy.r_eq, &r_compl = copy.r_compl;
-      k_eq    = 0;
-      k_const = 0;
-      k_compl = 0;
-      r_eq    = 0;
-      r_compl = 0;
-      copy.constant_eq = 0;
-      copy.owned       = cell->is_locally_owned_on_level();
-      fe_values.reinit(cell);
-
-      auto &residual   = scratch.residual;
-      auto &divergence = scratch.divergence;
-      for (unsigned int q = 0; q < quadrature.size(); ++q)
-        {
-          const double JxW = fe_values.JxW(q);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              Tensor<2, dim> sigma;
-              for (unsigned int m = 0; m < dim; ++m)
-                {
-                  const Tensor<1, dim> r = fe_values[row[m]].value(i, q);
-                  for (unsigned int k = 0; k < dim; ++k)
-                    sigma[m][k] = r[k];
-                  divergence[i][m] = fe_values[row[m]].divergence(i, q);
-                }
-              const Tensor<2, dim> eps =
-                fe_values[displacement].symmetric_gradient(i, q);
-              residual[i] = compliance(sigma, material.mu, material.lambda) - eps;
-            }
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j <= i; ++j)
-              {
-                k_eq(i, j) += c_eq * (divergence[i] * divergence[j]) * JxW;
-                k_const(i, j) +=
-                  c_const * scalar_product(residual[i], residual[j]) * JxW;
-              }
-          if (body)
-            {
-              scene.body_force().vector_value(fe_values.quadrature_point(q), scratch.f);
-              Tensor<1, dim> ft;
-              for (unsigned int d = 0; d < dim; ++d)
-                ft[d] = scratch.f[d];
-              for (unsigned int i = 0; i < n; ++i)
-                r_eq(i) -= c_eq * (ft * divergence[i]) * JxW;
-              copy.constant_eq += c_eq * (ft * ft) * JxW;
-            }
-        }
-      for (unsigned int i = 0; i < n; ++i)
-        for (unsigned int j = i + 1; j < n; ++j)
-          {
-            k_eq(i, j)    = k_eq(j, i);
-            k_const(i, j) = k_const(j, i);
-          }
-
-      // Complementarity term on Gamma_C, symmetrized:
-      // C_compl/2 [(u_i.n)(sigma_j n_b.n) + (u_j.n)(sigma_i n_b.n)].
-      copy.touches_contact = false;
-      if (contact)
-        for (const unsigned int f : cell->face_indices())
-          if (cell->at_boundary(f) && scene.is_contact(cell->face(f)->boundary_id()))
-            {
-              copy.touches_contact = true;
-              auto &fe_face        = scratch.fe_face;
-              fe_face.reinit(cell, f);
-              for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-                {
-                  const Point<dim>     p   = fe_face.quadrature_point(q);
-                  const Tensor<1, dim> n_o = scene.obstacle_normal(p);
-                  const Tensor<1, dim> n_b = fe_face.normal_vector(q);
-                  const double         g   = scene.gap().value(p);
-                  const double         JxW = fe_face.JxW(q);
-                  auto &               un  = scratch.un;
-                  auto &               sn  = scratch.sn;
-                  for (unsigned int i = 0; i < n; ++i)
-                    {
-                      un[i] = fe_face[displacement].value(i, q) * n_o;
-                      Tensor<1, dim> traction;
-                      for (unsigned int m = 0; m < dim; ++m)
-                        traction[m] = fe_face[row[m]].value(i, q) * n_b;
-                      sn[i] = traction * n_o;
-                    }
-                  for (unsigned int i = 0; i < n; ++i)
-                    {
-                      for (unsigned int j = 0; j < n; ++j)
-                        k_compl(i, j) += 0.5 * c_compl * (un[i] * sn[j] + un[j] * sn[i]) * JxW;
-                      r_compl(i) += 0.5 * c_compl * g * sn[i] * JxW;
-                    }
-                }
-            }
-
-      auto &dofs = copy.dofs;
-      cell->get_mg_dof_indices(dofs);
-      for (auto &dof : dofs)
-        dof = data.partitioner->global_to_local(dof);
-
-      // Change of basis R^T K R for DoFs in rotation blocks (section 4.3).
-      bool rotated = false;
-      for (unsigned int i = 0; i < n; ++i)
-        rotated |= data.rotation_of_dof[dofs[i]] != numbers::invalid_unsigned_int;
-      if (rotated)
-        {
-          FullMatrix<double> R(n, n), tmp(n, n);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const unsigned int b = data.rotation_of_dof[dofs[i]];
-              if (b == numbers::invalid_unsigned_int)
-                {
-                  R(i, i) = 1.;
-                  continue;
-                }
-              const auto &       block = data.rotations[b];
-              const unsigned int ki =
-                std::find(block.dofs.begin(), block.dofs.end(), dofs[i]) -
-                block.dofs.begin();
-              for (unsigned int j = 0; j < n; ++j)
-                {
-                  const auto kj = std::find(block.dofs.begin(), block.dofs.end(), dofs[j]);
-                  if (kj != block.dofs.end())
-                    R(i, j) = block.matrix(ki, kj - block.dofs.begin());
-                }
-            }
-          Vector<double> tmp_v(n);
-          for (FullMatrix<double> *k : {&k_eq, &k_const, &k_compl})
-            {
-              tmp = 0;
-              tmp.triple_product(*k, R, R, true, false);
-              *k = tmp;
-            }
-          for (Vector<double> *r : {&r_eq, &r_compl})
-            {
-              R.Tvmult(tmp_v, *r);
-              *r = tmp_v;
-            }
-        }
-
-      // J = 1/2 x^T A x - b^T x + c with A = 2 K and b = 2 r.
-      copy.k_total = 0;
-      copy.k_total.add(2., k_eq);
-      copy.k_total.add(2., k_const);
-      copy.r_total = 0;
-      copy.r_total.add(2., r_eq);
-      if (copy.touches_contact)
-        {
-          copy.k_total.add(2., k_compl);
-          copy.r_total.add(2., r_compl);
-        }
-    };
-
+    //
     // An exception in a WorkStream worker aborts the program (deal.II
     // prints it and calls std::abort); a bad expression met here, e.g. an
     // obstacle normal that evaluates to zero, must end in the usual
@@ -306,7 +300,23 @@ namespace FoslsContact
         return; // no DoFs on this process
       try
         {
-          assemble_cell(cell, scratch, copy);
+          cell_terms(cell, scratch, copy);
+          contact_terms(cell, scratch, copy);
+          cell->get_mg_dof_indices(copy.dofs);
+          for (auto &dof : copy.dofs)
+            dof = data.partitioner->global_to_local(dof);
+          rotate(data, copy);
+          // J = 1/2 x^T A x - b^T x + c with A = 2 K and b = 2 r.
+          copy.k_total = 0;
+          copy.k_total.add(2., copy.k_eq);
+          copy.k_total.add(2., copy.k_const);
+          copy.r_total = 0;
+          copy.r_total.add(2., copy.r_eq);
+          if (copy.touches_contact)
+            {
+              copy.k_total.add(2., copy.k_compl);
+              copy.r_total.add(2., copy.r_compl);
+            }
           copy.valid = true;
         }
       catch (...)
@@ -348,8 +358,8 @@ namespace FoslsContact
                     copier,
                     AssemblyScratch<dim>(discretization.get_mapping(),
                                          fe,
-                                         quadrature,
-                                         face_quadrature),
+                                         QGauss<dim>(3),
+                                         QGauss<dim - 1>(3)),
                     AssemblyCopy(n));
     if (error)
       std::rethrow_exception(error);
@@ -359,6 +369,7 @@ namespace FoslsContact
     qp.constant_eq = Utilities::MPI::sum(qp.constant_eq, qp.get_communicator());
     qp.constant    = qp.constant_eq;
   }
+
 
   template class FoslsAssembler<2>;
   template class FoslsAssembler<3>;

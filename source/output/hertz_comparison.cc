@@ -53,7 +53,7 @@ namespace FoslsContact
   template <int dim>
   void
   HertzComparison<dim>::evaluate(const Tensor<1, dim> &                           total_force,
-                                 const std::vector<std::array<double, dim + 4>> &rows)
+                                 const std::vector<typename ContactRow<dim>::Values> &rows)
   {
     const double R = hertz.radius, pi = numbers::PI;
     // the full model's force (per unit length for a cylinder)
@@ -79,8 +79,8 @@ namespace FoslsContact
         Tensor<1, dim> p;
         for (unsigned int d = 0; d < dim; ++d)
           p[d] = row[d];
-        const double r = distance(p), p_h = -row[dim + 2];
-        if (row[dim + 3] == 1)
+        const double r = distance(p), p_h = -row[ContactRow<dim>::sigma_nn];
+        if (row[ContactRow<dim>::active] == 1)
           edge_inside = std::max(edge_inside, r);
         if (p_h > peak)
           {
@@ -95,7 +95,7 @@ namespace FoslsContact
         Tensor<1, dim> p;
         for (unsigned int d = 0; d < dim; ++d)
           p[d] = row[d];
-        if (row[dim + 3] == 0 && distance(p) > edge_inside)
+        if (row[ContactRow<dim>::active] == 0 && distance(p) > edge_inside)
           edge_outside = std::min(edge_outside, distance(p));
       }
     pressure_error = norm > 0 ? std::sqrt(difference / norm) : 0.;

@@ -5,6 +5,7 @@
 #include <limits>
 #include <iomanip>
 #include <sstream>
+#include <tuple>
 
 namespace FoslsContact
 {
@@ -26,6 +27,9 @@ namespace FoslsContact
                 ExcMessage("the starting iterate is not finite"));
     timer.restart();
     history.clear();
+    has_converged = at_floor = floor_stagnated = false;
+    reason.clear();
+    stall_error = 0;
     IterationRecord r;
     r.functional = qp.parts(x);
     active_set            = qp.active_set(x);
@@ -151,7 +155,27 @@ namespace FoslsContact
                                std::sqrt(std::max(r.functional.total, 0.));
       }
     has_converged = stop;
+    reason        = !stop                                                             ? "" :
+                    at_floor                                                          ? "round-off floor" :
+                    parameters.stopping == Parameters::Solver::Stopping::tolerance ? "tolerance" :
+                                                                                     "discretization accuracy";
+    if (!stop && detect_stalls && detect_stall())
+      {
+        stop   = true;
+        reason = "stalled";
+      }
     const bool out_of_iterations = r.iteration >= parameters.max_iterations;
+    if (!stop && out_of_iterations)
+      reason = "iteration limit";
+    // (the decision of the first process for all: the numbers it rests on
+    // are sums over all processes, which MPI need not round alike on every
+    // process, and a process that stops alone would wait for the others
+    // in their next collective)
+    const auto decision = Utilities::MPI::broadcast(
+      qp.get_communicator(),
+      std::make_tuple(stop, has_converged, at_floor, reason),
+      0);
+    std::tie(stop, has_converged, at_floor, reason) = decision;
 
     pcout << "  " << solver_name << ": it " << std::setw(3) << r.iteration
           << "  J = " << std::scientific << std::setprecision(6)
@@ -160,6 +184,56 @@ namespace FoslsContact
           << std::setprecision(3) << r.rate << "  active = " << r.active
           << std::endl;
     return stop || out_of_iterations;
+  }
+
+
+  bool
+  Monitor::detect_stall()
+  {
+    // The last stall_window iterations, with the active set unchanged (the
+    // linear phase: the rate is that of the method on a fixed truncation,
+    // and will not improve by itself)
+    const unsigned int k = history.size() - 1;
+    if (k < stall_window + 1 || active_set_changed_at + stall_window > k)
+      return false;
+    // every rate between stall_rate and 1/stall_rate (a steady rate: a
+    // correction that grows, as before an active set changes, is not a
+    // stall), the corrections far above their round-off floor (where the
+    // rate is noise)
+    double log_rate = 0;
+    for (unsigned int j = k + 1 - stall_window; j <= k; ++j)
+      {
+        if (history[j].rate < stall_rate || history[j].rate > 1. / stall_rate ||
+            history[j].correction <= 1000. * history[j].round_off)
+          return false;
+        log_rate += std::log(history[j].rate) / stall_window;
+      }
+    // the estimated error (rho / (1 - rho) times the correction) against
+    // the stopping rule's target, at the mean rate rho of the window
+    const double rho = std::exp(log_rate);
+    double       error = std::numeric_limits<double>::infinity(), target;
+    if (parameters.stopping == Parameters::Solver::Stopping::tolerance)
+      {
+        if (rho < 1.)
+          error = history[k].correction * rho / (1. - rho);
+        target = parameters.tolerance * history[1].correction;
+      }
+    else
+      {
+        if (rho < 1.)
+          error = history[k].correction * rho / (1. - rho) / std::sqrt(2.);
+        target = parameters.discretization_fraction *
+                 std::sqrt(std::max(history[k].functional.total, 0.));
+      }
+    if (!(error > target))
+      return false;
+    // the iterations that would take, against those left
+    const double needed =
+      rho < 1. ? std::log(error / target) / -std::log(rho) : std::numeric_limits<double>::infinity();
+    if (needed <= stall_excess * (double(parameters.max_iterations) - k))
+      return false;
+    stall_error = target > 0 ? error / target : std::numeric_limits<double>::infinity();
+    return true;
   }
 
 

@@ -56,6 +56,24 @@ namespace FoslsContact
     reference.length = reference_length(prm);
     reference.stress =
       prm.scaling.reference_stress > 0 ? prm.scaling.reference_stress : prm.material.mu;
+    // the output converts back with L^dim and S L^(dim-1) (areas, volumes,
+    // forces): keep them far from overflow and underflow
+    for (const auto &[value, name] :
+         {std::make_pair(reference.length,
+                         prm.scaling.reference_length > 0 ?
+                           std::string("parameter 'Scaling/Reference length'") :
+                           std::string("the size of the body (Geometry)")),
+          std::make_pair(reference.stress,
+                         prm.scaling.reference_stress > 0 ?
+                           std::string("parameter 'Scaling/Reference stress'") :
+                           std::string("parameter 'Material/mu'"))})
+      {
+        std::ostringstream text;
+        text << name << " = " << value
+             << " is outside the range [1e-100, 1e100] the program supports (areas, "
+                "volumes and forces computed from it would overflow double precision)";
+        AssertThrow(value >= 1e-100 && value <= 1e100, ExcMessage(text.str()));
+      }
     dimensionless_material = prm.material;
     dimensionless_material.mu /= reference.stress;
     dimensionless_material.lambda /= reference.stress;

@@ -2,6 +2,8 @@
 
 #include <fosls_contact/solvers/active_set_direct.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace FoslsContact
@@ -43,19 +45,76 @@ namespace FoslsContact
       direct.initialize(M, partitioner, factorization_pattern);
       direct.vmult(x, rhs);
     }
+
+
+    /** The owners' flags of @p flags to the ghost entries. */
+    void
+    exchange_flags(const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+                   std::vector<bool> &                                       flags)
+    {
+      std::vector<unsigned char> f(flags.begin(), flags.end());
+      exchange_ghosts(partitioner, f);
+      std::copy(f.begin(), f.end(), flags.begin());
+    }
+
+
+    /**
+     * The bound of the working set to release at the minimizer @p x of its
+     * face: the most negative multiplier (b - A x)_i, scaled by
+     * 1/sqrt(A_ii) to be independent of the DoF's scale, as (scaled
+     * multiplier, global index), the same on every process (ties to the
+     * smallest index); (0, 0) if none is negative. Multipliers within the
+     * round-off of their row's terms count as zero: a degenerate bound,
+     * whose multiplier is zero at the solution, would otherwise leave and
+     * return by round-off. Collective.
+     */
+    std::pair<double, types::global_dof_index>
+    bound_to_release(const SparseMatrix<double> &A,
+                     const LevelVector &         b,
+                     const LevelVector &         x,
+                     const std::vector<bool> &   working)
+    {
+      const auto &partitioner = *x.get_partitioner();
+      LevelVector Ax(x.get_partitioner());
+      vmult(A, Ax, x);
+      std::pair<double, types::global_dof_index> release{0., 0};
+      for (unsigned int i = 0; i < working.size(); ++i)
+        if (working[i])
+          {
+            double row = std::abs(b.local_element(i));
+            for (auto e = A.begin(i); e != A.end(i); ++e)
+              row += std::abs(e->value() * x.local_element(e->column()));
+            const double mu = b.local_element(i) - Ax.local_element(i);
+            if (mu < -1e3 * std::numeric_limits<double>::epsilon() * row)
+              release = std::min(release,
+                                 std::make_pair(mu / std::sqrt(A.diag_element(i)),
+                                                partitioner.local_to_global(i)));
+          }
+      const auto all = gather_all(partitioner.get_mpi_communicator(), release);
+      return *std::min_element(all.begin(), all.end());
+    }
   } // namespace
 
 
   ActiveSetDirect::Outcome
-  ActiveSetDirect::iterate(const SparseMatrix<double> &A,
-                           const LevelVector &         b,
-                           const std::vector<DoFRole> &role,
-                           const LevelVector &         ub,
-                           LevelVector &               x,
-                           const unsigned int          max_steps,
-                           Monitor *                   monitor,
-                           const SparsityPattern *     factorization_pattern)
+  ActiveSetDirect::run(const Problem &    problem,
+                       LevelVector &      x,
+                       const unsigned int max_steps,
+                       Monitor *          monitor)
   {
+    const Outcome outcome = iterate(problem, x, max_steps, monitor);
+    return outcome == Outcome::cycling ? primal_active_set(problem, x, max_steps, monitor) :
+                                         outcome;
+  }
+
+
+  ActiveSetDirect::Outcome
+  ActiveSetDirect::iterate(const Problem &    problem,
+                           LevelVector &      x,
+                           const unsigned int max_steps,
+                           Monitor *          monitor)
+  {
+    const auto &[A, b, role, ub, factorization_pattern] = problem;
     const auto &       partitioner = x.get_partitioner();
     const unsigned int n_owned     = x.locally_owned_size();
     const MPI_Comm     comm        = x.get_mpi_communicator();
@@ -77,11 +136,7 @@ namespace FoslsContact
             if (active[i])
               x.local_element(i) = ub.local_element(i);
           }
-        {
-          std::vector<unsigned char> e(eliminated.begin(), eliminated.end());
-          exchange_ghosts(partitioner, e);
-          std::copy(e.begin(), e.end(), eliminated.begin());
-        }
+        exchange_flags(partitioner, eliminated);
         const bool unchanged = step > 0 && active == previous;
         if (Utilities::MPI::min(unchanged ? 1u : 0u, comm) == 1)
           return Outcome::converged;
@@ -115,6 +170,75 @@ namespace FoslsContact
   }
 
 
+  ActiveSetDirect::Outcome
+  ActiveSetDirect::primal_active_set(const Problem &    problem,
+                                     LevelVector &      x,
+                                     const unsigned int max_steps,
+                                     Monitor *          monitor)
+  {
+    const auto &[A, b, role, ub, factorization_pattern] = problem;
+    const auto &       partitioner = x.get_partitioner();
+    const unsigned int n_owned     = x.locally_owned_size();
+    auto bounded = [&](const unsigned int i) {
+      return role[i] == DoFRole::bounded && A.diag_element(i) > 0.;
+    };
+    // a feasible start, the DoFs at their bound held there (the working set)
+    std::vector<bool> working(n_owned, false), eliminated(role.size(), false);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (bounded(i) && x.local_element(i) >= ub.local_element(i))
+        {
+          x.local_element(i) = ub.local_element(i);
+          working[i]         = true;
+        }
+    LevelVector direction(partitioner), x_old;
+    for (unsigned int step = 0; step < max_steps; ++step)
+      {
+        // towards the minimizer on the face of the working set
+        for (unsigned int i = 0; i < n_owned; ++i)
+          eliminated[i] = role[i] == DoFRole::fixed || A.diag_element(i) <= 0. || working[i];
+        exchange_flags(partitioner, eliminated);
+        direction = x;
+        solve_reduced(A, factorization_pattern, b, eliminated, direction);
+        direction -= x;
+
+        // as far as the bounds allow; the bounds that stop it join the
+        // working set
+        double t = 1.;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          if (bounded(i) && !working[i] && direction.local_element(i) > 0.)
+            t = std::min(t,
+                         std::max(0., ub.local_element(i) - x.local_element(i)) /
+                           direction.local_element(i));
+        t = Utilities::MPI::min(t, x.get_mpi_communicator());
+        if (monitor)
+          x_old = x;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          {
+            const double xi = x.local_element(i) + t * direction.local_element(i);
+            const bool   stops = bounded(i) && !working[i] &&
+                               direction.local_element(i) > 0. && xi >= ub.local_element(i);
+            x.local_element(i) = stops ? ub.local_element(i) : xi;
+            working[i]         = working[i] || stops;
+          }
+
+        // at the face's minimizer: release a bound, or the KKT point
+        bool done = false;
+        if (t == 1.)
+          {
+            const auto release = bound_to_release(A, b, x, working);
+            if (release.first < 0. && partitioner->in_local_range(release.second))
+              working[partitioner->global_to_local(release.second)] = false;
+            done = !(release.first < 0.);
+          }
+        if (monitor && monitor->report(x, x_old) && !monitor->converged() && !done)
+          return Outcome::out_of_steps;
+        if (done)
+          return Outcome::converged;
+      }
+    return Outcome::out_of_steps;
+  }
+
+
   bool
   ActiveSetDirect::solve_quietly(const SparseMatrix<double> &A,
                                  const LevelVector &         b,
@@ -123,9 +247,7 @@ namespace FoslsContact
                                  LevelVector &               x,
                                  const unsigned int          max_steps)
   {
-    // A repeated active set means the method cycles: the last solve is the
-    // best there is, and the caller's KKT residual shows its quality.
-    return iterate(A, b, role, ub, x, max_steps, nullptr) == Outcome::converged;
+    return run({A, b, role, ub, nullptr}, x, max_steps, nullptr) == Outcome::converged;
   }
 
 
@@ -137,21 +259,11 @@ namespace FoslsContact
     update_ghosts(x);
     qp.project_to_feasible(x);
     monitor.start(x);
-    const Outcome outcome = iterate(qp.matrix,
-                                    qp.rhs,
-                                    qp.role,
-                                    qp.upper_bounds,
-                                    x,
-                                    std::numeric_limits<unsigned int>::max(),
-                                    &monitor,
-                                    qp.coupling_sparsity);
-    AssertThrow(outcome != Outcome::cycling,
-                ExcMessage(monitor.name() +
-                           ": the primal-dual active set method cycles (an active set "
-                           "repeated); " +
-                           (monitor.name() == "active set" ?
-                              "use Solver/Type = monotone multigrid" :
-                              "use 'Solver/Initial guess' = zero")));
+    const Outcome outcome =
+      run({qp.matrix, qp.rhs, qp.role, qp.upper_bounds, qp.coupling_sparsity},
+          x,
+          std::numeric_limits<unsigned int>::max(),
+          &monitor);
     if (outcome == Outcome::converged)
       monitor.set_converged();
   }

@@ -362,8 +362,11 @@ namespace FoslsContact
                                        LevelVector &               v)
   {
     const TimedScope timing(coarse_time);
-    const auto &   partitioner = *v.get_partitioner();
-    const MPI_Comm comm        = v.get_mpi_communicator();
+    // (the level's partitioner, not v's: every process takes part)
+    const auto &   partitioner = *hierarchy.level(l).partitioner;
+    const MPI_Comm comm        = partitioner.get_mpi_communicator();
+    Assert(v.locally_owned_size() == partitioner.locally_owned_size(),
+           ExcMessage("monotone multigrid: coarse vector of another layout"));
     const auto     n_owned     = partitioner.locally_owned_size();
     if (&A != coarse_matrix || version[l] != coarse_version)
       {
@@ -548,7 +551,12 @@ namespace FoslsContact
     // once, and allocating them per visit showed up as page faults)
     Scratch &          work        = scratch[l];
     auto &             defect      = work.defect;
-    if (work.truncated.size() != n_local)
+    // (set up on the first visit; a process may own no DoF of the level,
+    // so the size of the arrays cannot tell whether they are: the vectors'
+    // partitioners can, and without them the vectors would live on
+    // MPI_COMM_SELF and the coarse solve's collectives would skip this
+    // process)
+    if (work.defect.get_partitioner() != fine.partitioner)
       {
         work.truncated.resize(n_local);
         work.defect.reinit(fine.partitioner);
@@ -984,6 +992,7 @@ namespace FoslsContact
                            "pattern the solver was set up for"));
     update_ghosts(x);
     qp.project_to_feasible(x);
+    monitor.enable_stall_detection();
     monitor.start(x);
     {
       const TimedScope timing(galerkin_time);

@@ -19,6 +19,7 @@ import csv
 import json
 import math
 import os
+import signal
 import subprocess
 import sys
 
@@ -159,11 +160,14 @@ class Runner:
         self.exe, self.source = argv[1], argv[2]
         self.count = 0
 
-    def run(self, prm, settings=(), name=None, processes=1):
+    def run(self, prm, settings=(), name=None, processes=1, timeout=None):
         """Run @p prm (relative to the source directory) with the
         "Section/Name=value" strings @p settings, on @p processes MPI
         processes (mpirun from $MPIRUN, more processes than cores allowed);
-        the output goes to ./run_NN_<name>, without vtu files."""
+        the output goes to ./run_NN_<name>, without vtu files. A run that
+        takes longer than @p timeout seconds (a hang, e.g. a deadlock
+        between MPI processes) is killed with all its processes; its
+        returncode is then None."""
         self.count += 1
         directory = "run_%02d" % self.count + ("_" + name if name else "")
         command = command_line(self.exe, os.path.join(self.source, prm),
@@ -174,7 +178,27 @@ class Runner:
                              for c in command) + "\n")
         with open(directory + ".screen", "w") as out, \
                 open(directory + ".stderr", "w") as err:
-            returncode = subprocess.call(command, stdout=out, stderr=err)
+            # (a session of its own, so that mpirun and the processes it
+            # started can be killed together)
+            process = subprocess.Popen(command, stdout=out, stderr=err,
+                                       start_new_session=True)
+            try:
+                returncode = process.wait(timeout=timeout)
+            except subprocess.TimeoutExpired:
+                # mpirun ends its processes on SIGTERM (they are not all in
+                # its process group); whatever is left of the session then
+                # gets SIGKILL
+                process.terminate()
+                try:
+                    process.wait(timeout=10)
+                except subprocess.TimeoutExpired:
+                    pass
+                try:
+                    os.killpg(process.pid, signal.SIGKILL)
+                except ProcessLookupError:
+                    pass
+                process.wait()
+                returncode = None
         with open(directory + ".screen") as f:
             screen = f.read()
         with open(directory + ".stderr") as f:
@@ -397,3 +421,32 @@ def check_hertz(run, label, shape, E, nu, radius, centre, normal, factor=1., axi
     check(inside < a < outside, label + ": Hertz's a between the last vertex in contact "
           "and the next")
     return peak, p0, a, inside, outside
+
+
+def check_same(runs, label, tolerance, last_tolerance=None):
+    """All @p runs converged to the first one's contact force and functional,
+    to @p tolerance (the last one to @p last_tolerance if given)."""
+    check(all(r.ok() and r["converged"] is True for r in runs), label + ": all converged")
+    tolerances = [tolerance] * (len(runs) - 2) + [last_tolerance or tolerance]
+    check(all(relative_difference(r["contact_force"], runs[0]["contact_force"]) <= t and
+              relative_difference(r["functional"], runs[0]["functional"]) <= t
+              for r, t in zip(runs[1:], tolerances)),
+          label + ": the same contact force and J to %g" % tolerance +
+          (" (the last one to %g)" % last_tolerance if last_tolerance else ""))
+
+
+def in_contact(run):
+    """The number of contact vertices of @p run in contact (contact.csv)."""
+    with open(os.path.join(run.directory, "contact.csv")) as f:
+        return sum(1 for row in csv.DictReader(f) if row["active"] == "1")
+
+
+def check_shipped(run, label):
+    """A shipped Hertz scene: converged, monotone and feasible, and at least
+    8 contact vertices in contact (enough to compare with Hertz)."""
+    describe(run, label, ("dofs", "converged", "active"))
+    check(run["converged"] is True, label + ": converged")
+    check_monotone_feasible(run, label)
+    n = in_contact(run)
+    print("%s: %d contact vertices in contact" % (label, n))
+    check(n >= 8, label + ": at least 8 contact vertices in contact")

@@ -9,6 +9,10 @@
 
 namespace FoslsContact
 {
+  template <int dim>
+  struct AssemblyScratch;
+  struct AssemblyCopy;
+
   /**
    * Assembles the augmented least-squares functional of paper eqs. (1)-(2),
    *
@@ -48,6 +52,17 @@ namespace FoslsContact
                                      const double          lambda);
 
   private:
+    /** The volume terms of @p cell (equilibrium, constitutive, body force). */
+    void cell_terms(const typename DoFHandler<dim>::level_cell_iterator &cell,
+                    AssemblyScratch<dim> &                              scratch,
+                    AssemblyCopy &                                      copy) const;
+    /** The complementarity term on the faces of @p cell on Gamma_C. */
+    void contact_terms(const typename DoFHandler<dim>::level_cell_iterator &cell,
+                       AssemblyScratch<dim> &                              scratch,
+                       AssemblyCopy &                                      copy) const;
+    /** The cell's terms in the normal-tangential basis: R^T K R, R^T r. */
+    void rotate(const LevelData<dim> &data, AssemblyCopy &copy) const;
+
     const Discretization<dim> &discretization;
     const Parameters::Material material;
     const Parameters::Weights  weights;

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <fosls_contact/output/postprocessor.h>
 #include <fosls_contact/parameters.h>
 
 #include <array>
@@ -45,11 +46,10 @@ namespace FoslsContact
 
     /**
      * Compare with @p force and the contact table @p rows (Postprocessor::
-     * contact_rows(): position, u_n, gap, sigma_nn, active per contact
-     * vertex).
+     * contact_rows()).
      */
     void evaluate(const Tensor<1, dim> &                           force,
-                  const std::vector<std::array<double, dim + 4>> &rows);
+                  const std::vector<typename ContactRow<dim>::Values> &rows);
 
     /** Hertz's pressure at distance @p r from the contact point. */
     double pressure(const double r) const;

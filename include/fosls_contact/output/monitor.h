@@ -65,8 +65,28 @@ namespace FoslsContact
     /** A solver had to shorten a coarse correction to stay feasible. */
     void note_feasibility_damping() { ++n_feasibility_dampings; }
 
-    /** For solvers that detect convergence themselves (active set). */
-    void set_converged() { has_converged = true; }
+    /**
+     * For solvers that detect convergence themselves (the active set
+     * method at its KKT point, the multigrid on one level): stop_reason()
+     * is then "exact".
+     */
+    void set_converged()
+    {
+      has_converged = true;
+      reason        = "exact";
+    }
+
+    /**
+     * Let report() end a run that stalls (a solver whose rate is steady
+     * once the active set settles: the monotone multigrid). A stall is
+     * stall_window iterations with the active set unchanged, every rate
+     * between stall_rate and 1/stall_rate and every correction far above
+     * its round-off floor, at whose mean rate rho the estimated error
+     * (rho/(1 - rho) times the correction) would need more than
+     * stall_excess times the iterations left to reach the stopping rule's
+     * target. Such a run ends as not converged, stop_reason() "stalled".
+     */
+    void enable_stall_detection() { detect_stalls = true; }
 
     unsigned int energy_increases() const { return n_energy_increases; }
     /** Whether the run stopped at the round-off floor of the corrections. */
@@ -74,6 +94,18 @@ namespace FoslsContact
     unsigned int feasibility_dampings() const { return n_feasibility_dampings; }
     unsigned int iterations() const { return history.size() - 1; }
     bool         converged() const { return has_converged; }
+    /**
+     * Why the run stopped: "tolerance", "discretization accuracy" (the
+     * stopping criteria), "round-off floor" (the corrections reached it),
+     * "exact" (set_converged()), all converged; "stalled" or "iteration
+     * limit", not converged; "" while it runs.
+     */
+    const std::string &stop_reason() const { return reason; }
+    /**
+     * For a run that stalled: its estimated error over the stopping rule's
+     * target when it stopped.
+     */
+    double stalled_error_ratio() const { return stall_error; }
     const std::vector<IterationRecord> &get_history() const { return history; }
 
     /** Geometric mean of the rates of the last (up to) 5 iterations. */
@@ -94,6 +126,25 @@ namespace FoslsContact
     void set_functional_unit(const double factor) { functional_unit = factor; }
 
   private:
+    /** The stall test of enable_stall_detection() on the history. */
+    bool detect_stall();
+
+    /**
+     * The stall test's constants. The plain cycle where the contact zone
+     * ends inside coarse faces creeps at 0.996 to 1.000 per iteration
+     * with the active set settled (half disc, 3 levels; the square
+     * [-1,1] x [0,1] with the gap 0.02 - 0.015 x^2, 5 levels), its
+     * estimated error 1e6 to 3e7 times the tolerance's target, and is found from
+     * iteration 12 to 15 on. The slowest converging runs of the tests keep
+     * a margin: the plain cycle creeping at 0.997 on the square with
+     * contact at one end (mg_round_off_stop, 1368 iterations allowed
+     * 3000) would need 2.5 times the iterations left, and every other
+     * multigrid run of the tests has no 5 steady rates above 0.99 in the
+     * linear phase.
+     */
+    static constexpr unsigned int stall_window = 5;
+    static constexpr double       stall_rate   = 0.99;
+    static constexpr double       stall_excess = 10.;
 
     const ConstrainedQP &         qp;
     const Parameters::Solver      parameters;
@@ -115,6 +166,9 @@ namespace FoslsContact
     bool                          at_floor               = false;
     bool                          floor_stagnated        = false;
     double                        functional_unit        = 1.;
+    bool                          detect_stalls          = false;
+    std::string                   reason;
+    double                        stall_error            = 0;
   };
 } // namespace FoslsContact
 

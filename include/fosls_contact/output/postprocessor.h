@@ -1,6 +1,7 @@
 #ifndef fosls_contact_output_postprocessor_h
 #define fosls_contact_output_postprocessor_h
 
+#include <fosls_contact/assembly/error_indicators.h>
 #include <fosls_contact/discretization/discretization.h>
 #include <fosls_contact/output/monitor.h>
 #include <fosls_contact/output/output_directory.h>
@@ -22,6 +23,23 @@ namespace FoslsContact
     {
       return std::sqrt(sigma_l2 * sigma_l2 + sigma_div * sigma_div);
     }
+  };
+
+  /**
+   * A row of the contact table (Postprocessor::contact_rows(), contact.csv):
+   * the positions of its entries.
+   */
+  template <int dim>
+  struct ContactRow
+  {
+    static constexpr unsigned int x        = 0;       ///< position (dim)
+    static constexpr unsigned int u        = dim;     ///< displacement (dim)
+    static constexpr unsigned int u_n      = 2 * dim; ///< normal displacement
+    static constexpr unsigned int gap      = 2 * dim + 1;
+    static constexpr unsigned int sigma_nn = 2 * dim + 2; ///< mean normal traction
+    static constexpr unsigned int active   = 2 * dim + 3; ///< 1 in contact, else 0
+    static constexpr unsigned int size     = 2 * dim + 4;
+    using Values                           = std::array<double, size>;
   };
 
   /** Extremes of the fields, in the scene's units. */
@@ -82,11 +100,13 @@ namespace FoslsContact
 
     /**
      * One row per contact vertex of the finest level, sorted by position,
-     * in the scene's units: the position, u_n, the gap, sigma_nn (the
-     * mean over the contact faces at the vertex) and 1 if the vertex is
-     * in contact (u_n = g), else 0. On the first process; collective.
+     * in the scene's units (ContactRow): the position, the displacement,
+     * u_n, the gap, sigma_nn (the mean over the contact faces at the
+     * vertex) and 1 if the vertex is in contact (u_n = g), else 0. On the
+     * first process; collective.
      */
-    std::vector<std::array<double, dim + 4>> contact_rows(const LevelVector &x_rotated) const;
+    std::vector<typename ContactRow<dim>::Values>
+    contact_rows(const LevelVector &x_rotated) const;
 
     /** contact_rows() as CSV text (on the first process; collective). */
     std::string contact_table(const LevelVector &x_rotated) const;
@@ -100,11 +120,29 @@ namespace FoslsContact
                const Monitor &                            monitor,
                const std::map<std::string, std::string> &summary,
                const std::string &                        used_parameters,
+               const ErrorIndicators<dim> &               indicators,
                OutputDirectory &                          output) const;
 
   private:
-    /** The solution's VTU piece of this process, and on the first the pvtu record. */
-    void write_vtu(const LevelVector &x_rotated, OutputDirectory &output) const;
+    /**
+     * The solution's VTU piece of this process (the fields of
+     * StressFields, the error indicators, the contact status), and on the
+     * first process the pvtu record and the pvd series; with contact, the
+     * same for the ContactSurface.
+     */
+    void write_vtu(const LevelVector &         x_rotated,
+                   const ErrorIndicators<dim> &indicators,
+                   OutputDirectory &           output) const;
+    /**
+     * Write the piece @p name.<process>.vtu of @p writer (a DataOut or
+     * DataOutFaces after build_patches) and, on the first process, the
+     * record @p name.pvtu, both naming the @p active fields.
+     */
+    template <typename Writer>
+    void write_pieces(Writer &           writer,
+                      const std::string &name,
+                      const std::string &active,
+                      OutputDirectory &  output) const;
 
     const Discretization<dim> &     discretization;
     const Parameters::AllParameters parameters;

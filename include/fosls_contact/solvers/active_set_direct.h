@@ -9,7 +9,13 @@ namespace FoslsContact
    * The reference solver: a primal-dual active set method (Hintermueller,
    * Ito, Kunisch) with a sparse direct solve (Amesos KLU) of the reduced
    * system in every step. It stops when the active set repeats, i.e. at the
-   * exact discrete KKT point. The test for the active set,
+   * exact discrete KKT point. Should an earlier active set come back instead
+   * (the method cycles: possible for a positive definite matrix that is not
+   * an M-matrix, and where multipliers and gaps are both zero at the
+   * solution, so that round-off decides their signs; measured with the
+   * obstacle normal (1, 0) on the square), it continues with a primal
+   * active set method from its last iterate, which cannot cycle
+   * (primal_active_set()). The test for the active set,
    * mu_i + c_i (x_i - ub_i) > 0, uses c_i = A_ii so that it is invariant to
    * the scaling of the DoFs. Distributed like the problem: every process
    * tests its own DoFs, the direct solver factorizes the distributed
@@ -39,24 +45,58 @@ namespace FoslsContact
     enum class Outcome
     {
       converged,   ///< the active set repeated in consecutive steps
-      cycling,     ///< an earlier active set came back
+      cycling,     ///< an earlier active set came back (iterate() only)
       out_of_steps ///< the step limit (or the monitor's) was reached
     };
 
     /**
-     * The method itself, shared by solve() and solve_quietly(): reports
-     * every step to @p monitor if there is one; the direct solver
-     * factorizes on @p factorization_pattern if given (see
-     * SparseDirectSolver::initialize()).
+     * The problem min 1/2 x^T A x - b^T x, x_i <= ub_i where role[i] is
+     * bounded; the direct solver factorizes on @p factorization_pattern
+     * if given (see SparseDirectSolver::initialize()).
      */
-    static Outcome iterate(const SparseMatrix<double> &A,
-                           const LevelVector &         b,
-                           const std::vector<DoFRole> &role,
-                           const LevelVector &         ub,
-                           LevelVector &               x,
-                           const unsigned int          max_steps,
-                           Monitor *                   monitor,
-                           const SparsityPattern *     factorization_pattern = nullptr);
+    struct Problem
+    {
+      const SparseMatrix<double> &A;
+      const LevelVector &         b;
+      const std::vector<DoFRole> &role;
+      const LevelVector &         ub;
+      const SparsityPattern *     factorization_pattern;
+    };
+
+    /**
+     * The method, shared by solve() and solve_quietly(): iterate(), and
+     * primal_active_set() from its last iterate if it cycles. Reports
+     * every step to @p monitor if there is one.
+     */
+    static Outcome run(const Problem &     problem,
+                       LevelVector &       x,
+                       const unsigned int  max_steps,
+                       Monitor *           monitor);
+
+    /** The primal-dual active set method. */
+    static Outcome iterate(const Problem &     problem,
+                           LevelVector &       x,
+                           const unsigned int  max_steps,
+                           Monitor *           monitor);
+
+    /**
+     * The fallback where iterate() cycles: a primal active set method
+     * (the sparse counterpart of BoxQP). From the feasible point
+     * min(x, ub) it minimizes J on the face of its working set (the
+     * bounded DoFs held at their bound) with the direct solver, moves
+     * towards that minimizer as far as the bounds allow, adds the bounds
+     * that stop it to the working set, and at the face's minimizer releases
+     * the bound with the most negative multiplier. Every iterate is
+     * feasible and every step that releases a bound decreases J strictly,
+     * so no working set comes back: it cannot cycle, and ends at the
+     * KKT point after finitely many steps. It needs a step per released
+     * or added bound (the primal-dual method changes many at once), which
+     * from the primal-dual method's last iterate are few.
+     */
+    static Outcome primal_active_set(const Problem &     problem,
+                                     LevelVector &       x,
+                                     const unsigned int  max_steps,
+                                     Monitor *           monitor);
   };
 } // namespace FoslsContact
 

@@ -1,0 +1,180 @@
+#!/usr/bin/env python3
+"""What a whole run costs: wall time, solve time, set-up time and peak memory
+per DoF, for the square (prm/square.prm, levels 5-9) and the cube
+(prm/cube3d.prm, levels 3-7, as far as the machine's memory allows), one
+process with all its threads, the fastest of --runs runs; with --base-rev,
+the same for another revision of the program (built here), run alternately
+with this build, and the ratios. Writes doc/scale_results.md (generated;
+doc/performance.md explains it) and prints it.
+
+    bench/scale.py                                  # this build only
+    bench/scale.py --base-rev 93af7be --runs 3      # against an earlier main
+
+Also: the square's contact force against its limit (extrapolated from
+levels 7-9, whose differences shrink by a steady factor, doc/results.md a)
+and the wall time of the first level within 1.5e-5 of it; and the memory of
+the program's structures per DoF (summary.json's memory_mb) where the build
+reports it.
+"""
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from parallel import ROOT, run  # noqa: E402
+
+RES = os.path.join(ROOT, "bench", "results", "scale")
+OUT = os.path.join(ROOT, "doc", "scale_results.md")
+CASES = [("square", "square.prm", range(5, 10), 4.0),
+         ("cube", "cube3d.prm", range(3, 8), 8.0)]  # (name, scene, levels, growth)
+TARGETS = {"wall_over_solve": 1.5, "bytes_per_dof": {"square": 1200, "cube": 2500}}
+
+
+def arguments():
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--runs", type=int, default=3, help="runs per case and build (default 3)")
+    p.add_argument("--base-rev", help="a git revision to build and compare with")
+    p.add_argument("--threads", type=int, default=2, help="threads (default 2)")
+    p.add_argument("--max-level", type=int, default=99,
+                   help="skip levels above this (both scenes)")
+    return p.parse_args()
+
+
+def available_mb():
+    with open("/proc/meminfo") as f:
+        for line in f:
+            if line.startswith("MemAvailable:"):
+                return int(line.split()[1]) / 1024.
+    return float("inf")
+
+
+def build_base(rev):
+    """Build revision @p rev in bench/results/scale/base (a git worktree, with
+    ccache if there is one); returns its binary."""
+    src = os.path.join(RES, "base-src")
+    if os.path.isdir(src):
+        subprocess.run(["git", "-C", ROOT, "worktree", "remove", "--force", src],
+                       capture_output=True)
+        shutil.rmtree(src, ignore_errors=True)
+    subprocess.run(["git", "-C", ROOT, "worktree", "add", "--detach", src, rev], check=True,
+                   capture_output=True)
+    build = os.path.join(src, "build")
+    os.makedirs(build, exist_ok=True)
+    cmake = ["cmake", "-DCMAKE_BUILD_TYPE=Release", ".."]
+    if shutil.which("ccache"):
+        cmake.insert(1, "-DCMAKE_CXX_COMPILER_LAUNCHER=ccache")
+    subprocess.run(cmake, cwd=build, check=True, capture_output=True)
+    subprocess.run(["make", "-j2", "fosls-contact"], cwd=build, check=True, capture_output=True)
+    return os.path.join(build, "fosls-contact")
+
+
+def measure(binaries, scene, level, runs, threads, tag):
+    """{build: summary of its fastest run by wall time}, builds alternated."""
+    names = list(binaries)
+    best = {}
+    for k in range(runs):
+        shift = k % len(names)
+        for name in names[shift:] + names[:shift]:
+            out = os.path.join(RES, f"{tag}_{name}_L{level}")
+            s = run(scene, {"Geometry/Levels": str(level)}, 1, threads, out,
+                    binary=binaries[name])
+            if name not in best or s["wall_s"] < best[name]["wall_s"]:
+                best[name] = s
+            print(f"  run {k + 1}/{runs} {tag} level {level} {name}: wall {s['wall_s']:.2f} s, "
+                  f"solve {s['time_solve_s']:.2f} s, peak {s['peak_rss_mb']:.0f} MB",
+                  flush=True)
+    return best
+
+
+def main():
+    a = arguments()
+    os.makedirs(RES, exist_ok=True)
+    binaries = {"this": os.path.join(ROOT, "build", "fosls-contact")}
+    if a.base_rev:
+        binaries["base"] = build_base(a.base_rev)
+    results = {}
+    for tag, scene, levels, growth in CASES:
+        previous_mb = None
+        for level in levels:
+            if level > a.max_level:
+                continue
+            if previous_mb and previous_mb * growth > 0.85 * available_mb():
+                print(f"{tag} level {level}: skipped, about {previous_mb * growth / 1024:.1f} GB "
+                      f"expected, {available_mb() / 1024:.1f} GB available", flush=True)
+                results[(tag, level)] = None
+                continue
+            best = measure(binaries, scene, level, a.runs, a.threads, tag)
+            results[(tag, level)] = best
+            previous_mb = max(s["peak_rss_mb"] for s in best.values())
+
+    lines = ["# Whole runs: time and memory per DoF\n",
+             "<!-- generated by bench/scale.py; do not edit by hand -->\n",
+             f"One process, {a.threads} threads, the default solver, the fastest of {a.runs} "
+             "runs by wall time" + (f"; `base` is revision {a.base_rev}, built and run "
+                                     "alternately with this build" if a.base_rev else "") +
+             ". wall = the whole process (start-up, set-up, checks, solve, output); "
+             "set-up = mesh, DoFs, levels, assembly, checks and the solver's set-up "
+             "(`time_setup_s`); bytes per DoF = peak resident memory / DoFs.\n"]
+    header = ["scene", "level", "DoFs", "wall s", "solve s", "set-up s", "wall / solve",
+              "peak MB", "bytes per DoF"]
+    if a.base_rev:
+        header += ["base wall s", "base bytes per DoF", "wall ratio", "memory ratio"]
+    lines.append("| " + " | ".join(header) + " |")
+    lines.append("|" + "---|" * len(header))
+    for (tag, level), best in results.items():
+        if best is None:
+            lines.append(f"| {tag} | {level} | skipped (memory) |" + " |" * (len(header) - 3))
+            continue
+        s = best["this"]
+        per_dof = s["peak_rss_mb"] * 1024 * 1024 / s["dofs"]
+        row = [tag, level, s["dofs"], f"{s['wall_s']:.2f}", f"{s['time_solve_s']:.2f}",
+               f"{s['time_setup_s']:.2f}", f"{s['wall_s'] / s['time_solve_s']:.2f}",
+               f"{s['peak_rss_mb']:.0f}", f"{per_dof:.0f}"]
+        if a.base_rev:
+            b = best["base"]
+            b_per_dof = b["peak_rss_mb"] * 1024 * 1024 / b["dofs"]
+            row += [f"{b['wall_s']:.2f}", f"{b_per_dof:.0f}", f"{s['wall_s'] / b['wall_s']:.2f}",
+                    f"{per_dof / b_per_dof:.2f}"]
+        lines.append("| " + " | ".join(str(x) for x in row) + " |")
+    lines.append("")
+
+    # the square's force against its limit
+    forces = {level: results[("square", level)]["this"]["contact_force"][1]
+              for level in range(5, 10) if results.get(("square", level))}
+    if all(level in forces for level in (7, 8, 9)):
+        d8, d9 = forces[8] - forces[7], forces[9] - forces[8]
+        q = d9 / d8
+        limit = forces[9] + d9 * q / (1 - q)
+        lines.append(f"The square's contact force: limit {limit:.8g} (extrapolated from "
+                     f"levels 7-9, ratio of differences {q:.2f}); relative error by level: " +
+                     ", ".join(f"{level} {abs(f - limit) / abs(limit):.1e}"
+                               for level, f in sorted(forces.items())) + ".")
+        within = [level for level, f in sorted(forces.items())
+                  if abs(f - limit) / abs(limit) <= 1.5e-5]
+        if within:
+            s = results[("square", within[0])]["this"]
+            lines.append(f" The first level within 1.5e-5: {within[0]}, "
+                         f"{s['wall_s']:.2f} s wall.\n")
+        else:
+            lines.append(" No level is within 1.5e-5.\n")
+
+    # memory by structure, where the build reports it
+    for (tag, level), best in results.items():
+        if best and "memory_mb" in best["this"]:
+            memory = best["this"]["memory_mb"]
+            dofs = best["this"]["dofs"]
+            parts = ", ".join(f"{k} {v * 1024 * 1024 / dofs:.0f}" for k, v in
+                              sorted(memory.items(), key=lambda kv: -kv[1]))
+            lines.append(f"- {tag} level {level}, bytes per DoF by structure: {parts}")
+    lines.append("")
+    text = "\n".join(lines)
+    with open(OUT, "w") as f:
+        f.write(text)
+    print(text)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,149 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <fosls_contact/assembly/error_indicators.h>
+#include <fosls_contact/assembly/fosls_assembler.h>
+
+#include <algorithm>
+#include <functional>
+
+namespace FoslsContact
+{
+  template <int dim>
+  ErrorIndicators<dim>::ErrorIndicators(const Discretization<dim> &discretization,
+                                        const Parameters::Weights &weights)
+    : discretization(discretization)
+    , weights(weights)
+  {}
+
+
+  template <int dim>
+  void
+  ErrorIndicators<dim>::compute(const LevelVector &x_rotated)
+  {
+    const auto &scene    = discretization.get_scene();
+    const auto &material = scene.material();
+    LevelVector x        = x_rotated;
+    discretization.rotate_to_cartesian(discretization.finest_level(), x);
+    const LevelVector solution = discretization.to_active(x);
+
+    // the assembler's quadrature, so that the sum is the assembled J
+    const QGauss<dim>     quadrature(3);
+    const QGauss<dim - 1> face_quadrature(3);
+    FEValues<dim>         fe_values(discretization.get_mapping(),
+                            discretization.get_fe(),
+                            quadrature,
+                            update_values | update_gradients | update_quadrature_points |
+                              update_JxW_values);
+    FEFaceValues<dim>     fe_face(discretization.get_mapping(),
+                              discretization.get_fe(),
+                              face_quadrature,
+                              update_values | update_normal_vectors |
+                                update_quadrature_points | update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    const unsigned int                   nq = quadrature.size(), nf = face_quadrature.size();
+    std::vector<SymmetricTensor<2, dim>> eps(nq);
+    std::vector<Tensor<1, dim>>          row(std::max(nq, nf)), u(nf);
+    std::vector<double>                  divergence(nq);
+    std::vector<Tensor<2, dim>>          sigma(std::max(nq, nf));
+    std::vector<Tensor<1, dim>>          div_sigma(nq);
+    Vector<double>                       f(dim);
+
+    const unsigned int n_cells = discretization.get_triangulation().n_active_cells();
+    eq.reinit(n_cells);
+    constitutive.reinit(n_cells);
+    complementarity.reinit(n_cells);
+    for (const auto &cell : discretization.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const unsigned int i = cell->active_cell_index();
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_symmetric_gradients(solution, eps);
+          for (unsigned int m = 0; m < dim; ++m)
+            {
+              // one extractor per stress row (the Tensor<2> extractor's
+              // divergence is zero for these RT components on deal.II 9.4)
+              const FEValuesExtractors::Vector sigma_row(dim + m * dim);
+              fe_values[sigma_row].get_function_values(solution, row);
+              fe_values[sigma_row].get_function_divergences(solution, divergence);
+              for (unsigned int q = 0; q < nq; ++q)
+                {
+                  sigma[q][m]     = row[q];
+                  div_sigma[q][m] = divergence[q];
+                }
+            }
+          for (unsigned int q = 0; q < nq; ++q)
+            {
+              Tensor<1, dim> residual = div_sigma[q];
+              if (scene.has_body_force())
+                {
+                  scene.body_force().vector_value(fe_values.quadrature_point(q), f);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    residual[d] += f[d];
+                }
+              const Tensor<2, dim> r =
+                FoslsAssembler<dim>::compliance(sigma[q], material.mu, material.lambda) -
+                Tensor<2, dim>(eps[q]);
+              eq[i] += weights.c_eq * (residual * residual) * fe_values.JxW(q);
+              constitutive[i] += weights.c_const * scalar_product(r, r) * fe_values.JxW(q);
+            }
+          if (scene.has_contact())
+            for (const unsigned int face : cell->face_indices())
+              if (cell->at_boundary(face) && scene.is_contact(cell->face(face)->boundary_id()))
+                {
+                  fe_face.reinit(cell, face);
+                  fe_face[displacement].get_function_values(solution, u);
+                  for (unsigned int m = 0; m < dim; ++m)
+                    {
+                      fe_face[FEValuesExtractors::Vector(dim + m * dim)].get_function_values(
+                        solution, row);
+                      for (unsigned int q = 0; q < nf; ++q)
+                        sigma[q][m] = row[q];
+                    }
+                  for (unsigned int q = 0; q < nf; ++q)
+                    {
+                      const Point<dim>     p   = fe_face.quadrature_point(q);
+                      const Tensor<1, dim> n_o = scene.obstacle_normal(p);
+                      const double         s_n = (sigma[q] * fe_face.normal_vector(q)) * n_o;
+                      complementarity[i] += weights.c_compl * (u[q] * n_o - scene.gap().value(p)) *
+                                            s_n * fe_face.JxW(q);
+                    }
+                }
+        }
+
+    summarize();
+  }
+
+
+  template <int dim>
+  void
+  ErrorIndicators<dim>::summarize()
+  {
+    const MPI_Comm      comm = discretization.get_communicator();
+    std::vector<double> owned;
+    double              local_sum = 0;
+    for (const auto &cell : discretization.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          owned.push_back(squared(cell->active_cell_index()));
+          local_sum += owned.back();
+        }
+    sum     = Utilities::MPI::sum(local_sum, comm);
+    largest = Utilities::MPI::max(owned.empty() ? 0. : *std::max_element(owned.begin(),
+                                                                        owned.end()),
+                                  comm);
+    // the cells for half of J: gathered (the values only), largest first
+    const auto all = Utilities::MPI::all_gather(comm, owned);
+    std::vector<double> values;
+    for (const auto &part : all)
+      values.insert(values.end(), part.begin(), part.end());
+    std::sort(values.begin(), values.end(), std::greater<double>());
+    double partial = 0;
+    half_cells     = 0;
+    while (half_cells < values.size() && partial < 0.5 * sum)
+      partial += values[half_cells++];
+  }
+
+  template class ErrorIndicators<2>;
+  template class ErrorIndicators<3>;
+} // namespace FoslsContact

@@ -593,6 +593,7 @@ namespace FoslsContact
     summary["time_solve_s"]          = number(time_solve);
     summary["peak_rss_mb"]           = number(Utilities::MPI::sum(peak_mb, comm));
     summary["peak_rss_mb_per_process"] = number(Utilities::MPI::max(peak_mb, comm));
+    summary["memory_by_phase"] = memory_by_phase_json();
     summary["mpi_processes"]         = std::to_string(Utilities::MPI::n_mpi_processes(comm));
     // communication of the solve: point-to-point exchanges of the busiest
     // process, values sent by all; and the ghost DoFs per level (all
@@ -674,6 +675,36 @@ namespace FoslsContact
 
 
   template <int dim>
+  void
+  FoslsProblem<dim>::record_memory(const std::string &phase)
+  {
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    // resident memory summed over the processes, after the phase and at its
+    // peak so far; the growth from one phase to the next is what it kept
+    phase_memory.push_back({phase,
+                            Utilities::MPI::sum(memory.VmRSS / 1024., comm),
+                            Utilities::MPI::sum(memory.VmHWM / 1024., comm)});
+  }
+
+
+  template <int dim>
+  std::string
+  FoslsProblem<dim>::memory_by_phase_json() const
+  {
+    std::ostringstream json;
+    json << "[";
+    for (unsigned int i = 0; i < phase_memory.size(); ++i)
+      json << (i ? ", " : "") << "{\"phase\": \"" << phase_memory[i].phase
+           << "\", \"rss_mb\": " << number(phase_memory[i].rss_mb)
+           << ", \"peak_rss_mb\": " << number(phase_memory[i].peak_rss_mb) << "}";
+    json << "]";
+    return json.str();
+  }
+
+
+  template <int dim>
   std::string
   FoslsProblem<dim>::run()
   {
@@ -685,6 +716,7 @@ namespace FoslsContact
       work();
       pcout << name << " ... " << std::fixed << std::setprecision(2) << wall.wall_time()
             << " s" << std::defaultfloat << std::endl;
+      record_memory(name);
     };
     phase("Setup: mesh, DoFs, levels", [&] { setup(); });
     phase("Assembly", [&] { assemble(); });

@@ -82,6 +82,18 @@ namespace FoslsContact
     std::unique_ptr<QPSolver>            solver;
     std::unique_ptr<Monitor>             monitor;
     double                               time_setup = 0, time_solve = 0;
+    /** Resident memory (MB, all processes) after a phase of run(). */
+    struct PhaseMemory
+    {
+      std::string phase;
+      double      rss_mb;
+      double      peak_rss_mb;
+    };
+    std::vector<PhaseMemory> phase_memory;
+    /** Append the resident memory after @p phase. Collective. */
+    void record_memory(const std::string &phase);
+    /** phase_memory as a JSON array (the summary's memory_by_phase). */
+    std::string memory_by_phase_json() const;
     /** What this process sent point to point during the solve. */
     CommunicationCounter                 solve_communication;
   };

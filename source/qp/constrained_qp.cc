@@ -38,30 +38,54 @@ namespace FoslsContact
 
   namespace
   {
-    /** Put @p matrix on the pattern of its nonzero entries (and diagonal). */
+    /**
+     * Put @p matrix on @p sparsity, the pattern of its nonzero entries (and
+     * the diagonal). The pattern is built in place from exact row lengths
+     * and the kept values are staged in one array, so that the peak is the
+     * old matrix plus the new one: a DynamicSparsityPattern and a list of
+     * (column, value) pairs cost 2.5 times more at level 9 of the square.
+     */
     void
     compress(SparseMatrix<double> &matrix, SparsityPattern &sparsity)
     {
-      const auto             n = matrix.m();
-      DynamicSparsityPattern dsp(n, n);
-      std::vector<std::pair<types::global_dof_index, double>> entries;
-      std::vector<std::size_t>                                row_end;
+      Assert(&matrix.get_sparsity_pattern() != &sparsity, ExcInternalError());
+      const auto n    = matrix.m();
+      const auto kept = [](const auto &entry) {
+        return entry.value() != 0. || entry.column() == entry.row();
+      };
+      std::vector<unsigned int> row_lengths(n, 0);
+      for (types::global_dof_index i = 0; i < n; ++i)
+        row_lengths[i] = std::count_if(matrix.begin(i), matrix.end(i), kept);
+      sparsity.reinit(n, n, row_lengths);
+      for (types::global_dof_index i = 0; i < n; ++i)
+        for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
+          if (kept(*e))
+            sparsity.add(i, e->column());
+      sparsity.compress();
+
+      // Both patterns store a row as the diagonal and then the other
+      // columns in increasing order, so a new row is a subsequence of the
+      // old one.
+      std::vector<double> values;
+      values.reserve(sparsity.n_nonzero_elements());
       for (types::global_dof_index i = 0; i < n; ++i)
         {
-          for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
-            if (e->value() != 0.)
-              {
-                dsp.add(i, e->column());
-                entries.emplace_back(e->column(), e->value());
-              }
-          row_end.push_back(entries.size());
+          auto e = matrix.begin(i);
+          for (auto s = sparsity.begin(i); s != sparsity.end(i); ++s)
+            {
+              while (e->column() != s->column())
+                ++e;
+              values.push_back(e->value());
+            }
         }
-      sparsity.copy_from(dsp);
+      // clear() first: SparseMatrix::reinit keeps an allocation that is
+      // large enough, which would be that of the full pattern
+      matrix.clear();
       matrix.reinit(sparsity);
       std::size_t k = 0;
       for (types::global_dof_index i = 0; i < n; ++i)
-        for (; k < row_end[i]; ++k)
-          matrix.set(i, entries[k].first, entries[k].second);
+        for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
+          e->value() = values[k++];
     }
   } // namespace
 

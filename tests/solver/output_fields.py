@@ -13,7 +13,8 @@
 #   square); the contact surface (contact_surface_0000.pvtu) has the
 #   contact pressure, normal displacement and gap, the gap is never
 #   negative, and the pressure integrated over the contact faces is the
-#   contact force (RT0's normal traction is constant on a face).
+#   contact force (RT0's normal traction is constant on a face);
+#   summary.json's memory_by_phase has the resident memory after each phase.
 # - prm/steel_cylinder.prm (2 levels), a curved boundary: the VTU draws the
 #   cells with a quadratic mapping, subdivided once, so the midpoints of
 #   the boundary edges lie on the circle of radius 50 mm as well.
@@ -115,6 +116,13 @@ check(relative_difference(indicators["sum"], square["functional"]) < 1e-7,
       "SI square: error_indicators.sum = J to 1e-7")
 print("SI square: %d cells, %d of them hold half of J" % (indicators["cells"],
                                                          indicators["cells_for_half_of_J"]))
+phases = square["memory_by_phase"]
+check([p["phase"] for p in phases] == ["Setup: mesh, DoFs, levels", "Assembly",
+      "Checks: data, rigid motions, definiteness", "Initial guess", "Setup: solver", "Solve"]
+      and all(0 < p["rss_mb"] <= p["peak_rss_mb"] <= square["peak_rss_mb"] for p in phases)
+      and all(a["peak_rss_mb"] <= b["peak_rss_mb"] for a, b in zip(phases, phases[1:])),
+      "SI square: memory_by_phase has the resident memory after each phase up to the solve, "
+      "its peaks growing up to peak_rss_mb")
 force, F, lowest, scale = surface_force(square, 2, [0., -1.])
 check(relative_difference(force, F) < 1e-5, "SI square: the contact surface's pressure "
       "integrates to the contact force (%s N/m)" % rounded(F, 4))

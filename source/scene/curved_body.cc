@@ -25,6 +25,21 @@ namespace FoslsContact
       return {radius * (1. - std::pow(s, gamma)), theta_g};
     }
 
+    /**
+     * deal.II's half ball of @p radius around the origin (in 2D the half
+     * disc; cut plane perpendicular to x, the body at x >= 0), refined
+     * @p refinements times and flattened into a coarse mesh of useful size.
+     */
+    template <int dim>
+    void
+    refined_half_ball(const double radius, const unsigned int refinements, Triangulation<dim> &tria)
+    {
+      Triangulation<dim> half;
+      GridGenerator::half_hyper_ball(half, Point<dim>(), radius);
+      half.refine_global(refinements);
+      GridGenerator::flatten_triangulation(half, tria);
+    }
+
     /** Whether every vertex of @p face has the coordinate @p value in direction @p d. */
     template <typename Face>
     bool
@@ -62,12 +77,8 @@ namespace FoslsContact
                         const double       gamma,
                         Triangulation<2> & tria)
   {
-    // deal.II's half disc (cut plane perpendicular to x) turned by -90
-    // degrees, refined to make a coarse mesh of useful size, then graded
-    Triangulation<2> half;
-    GridGenerator::half_hyper_ball(half, Point<2>(), radius);
-    half.refine_global(refinements);
-    GridGenerator::flatten_triangulation(half, tria);
+    // deal.II's half disc turned by -90 degrees, then graded
+    refined_half_ball(radius, refinements, tria);
     GridTools::transform(
       [gamma, radius, center](const Point<2> &p) {
         // p is in the half disc x >= 0 around the origin; the x axis
@@ -87,10 +98,7 @@ namespace FoslsContact
                         const double       gamma,
                         Triangulation<3> & tria)
   {
-    Triangulation<3> half;
-    GridGenerator::half_hyper_ball(half, Point<3>(), radius);
-    half.refine_global(refinements);
-    GridGenerator::flatten_triangulation(half, tria);
+    refined_half_ball(radius, refinements, tria);
     GridTools::transform(
       [gamma, radius, center](const Point<3> &p) {
         // p is in the half ball x >= 0 around the origin. The x axis is

@@ -80,6 +80,8 @@ def human_pattern(desc):
 
     if d == "Anything":
         return "any text"
+    if d.startswith("FileName"):
+        return "a file name"
     if d == "Bool":
         return "`true` or `false`"
     m = re.fullmatch(r"Selection (.*)", d)

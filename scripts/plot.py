@@ -51,11 +51,13 @@ def hertz_pressure(hertz, r):
 
 def distance_in_plane(row, hertz, dim):
     """Distance of a contact vertex from Hertz's contact point, in the plane
-    orthogonal to the obstacle normal."""
+    orthogonal to the obstacle normal (and for a cylinder in 3D from its
+    contact line along "axis", which is zero otherwise)."""
     p = [float(row["xyz"[d]]) - hertz["contact_point"][d] for d in range(dim)]
-    n = hertz["normal"]
-    pn = sum(p[d] * n[d] for d in range(dim))
-    return math.sqrt(sum((p[d] - pn * n[d]) ** 2 for d in range(dim)))
+    for n in (hertz.get("axis", [0.] * dim), hertz["normal"]):
+        pn = sum(p[d] * n[d] for d in range(dim))
+        p = [p[d] - pn * n[d] for d in range(dim)]
+    return math.sqrt(sum(x * x for x in p))
 
 
 def plot_pressure(plt, summary, contact, out):

@@ -24,13 +24,41 @@ namespace FoslsContact
    */
   namespace Parameters
   {
-    /** subsection Geometry: which mesh, how fine, how many levels. */
+    /**
+     * subsection Geometry: which mesh, how fine, how many levels. The
+     * coarse mesh is a box, one of the built-in curved bodies (half disc,
+     * half ball, half cylinder), or read from a mesh file.
+     */
     struct Geometry
     {
       enum class Shape
       {
         box,
         half_disc,
+        half_ball,
+        half_cylinder,
+        file,
+      };
+
+      /**
+       * A curved surface that the faces of one boundary id lie on
+       * (`Geometry/Manifolds`): refinement puts the new vertices of these
+       * faces on it. In the scene's units.
+       */
+      struct Manifold
+      {
+        enum class Kind
+        {
+          sphere,   ///< a circle in 2D: center and radius
+          cylinder, ///< 3D: a point on the axis, the axis' direction, radius
+        };
+        unsigned int        boundary_id = 0;
+        Kind                kind        = Kind::sphere;
+        std::vector<double> point;     ///< the center, or a point on the axis
+        std::vector<double> direction; ///< the axis (cylinder only)
+        double              radius = 0;
+        /** The entry as written, for messages. */
+        std::string text;
       };
 
       unsigned int        dimension = 2;
@@ -40,13 +68,23 @@ namespace FoslsContact
       std::vector<unsigned int> subdivisions;
       double              radius       = 0.5;
       std::vector<double> center;
-      unsigned int        disc_refinements = 2;
-      double              grading          = 1.0;
+      /** Length of the half cylinder (along z). */
+      double              length = 1.;
+      /** Cells of the half cylinder's coarse mesh along its axis. */
+      unsigned int        length_subdivisions = 2;
+      unsigned int        coarse_refinements  = 2;
+      double              grading             = 1.0;
+      /** The mesh file, resolved by ParameterReader (Shape = file). */
+      std::string           mesh_file;
+      std::vector<Manifold> manifolds;
       /** Number of multigrid levels J (the coarse mesh is level 1). */
       unsigned int levels = 5;
 
       static void declare_parameters(ParameterHandler &prm);
       void        parse_parameters(ParameterHandler &prm);
+
+    private:
+      void parse_manifolds(const std::string &text);
     };
 
     /**
@@ -231,6 +269,16 @@ namespace FoslsContact
       double              radius = 0;
       /** The first point of contact, where Hertz's pressure peaks. */
       std::vector<double> contact_point;
+      /**
+       * The full contact's force per computed force: 4 for a quarter model
+       * of a sphere, 2 for a half model; Hertz's formulas get the full
+       * force.
+       */
+      double              force_factor = 1.;
+      /** A cylinder in 3D: the direction of its axis. */
+      std::vector<double> axis;
+      /** A cylinder in 3D: the length of the contact line (of the full model). */
+      double              length = 0.;
 
       static void declare_parameters(ParameterHandler &prm);
       void        parse_parameters(ParameterHandler &prm);
@@ -257,6 +305,15 @@ namespace FoslsContact
     double parse_extended_double(const std::string &text, const std::string &name);
     /** Parse a comma separated list of doubles. */
     std::vector<double> parse_double_list(const std::string &text);
+    /**
+     * A body of size @p size at distance @p distance from the origin has
+     * vertex coordinates that must resolve the cells of the finest level
+     * (size / 2^13 with 14 levels) in double precision: refuse a size
+     * below 1e-6 of the distance, naming @p what, instead of meeting
+     * degenerate cells later. (Any size itself is fine: the program works
+     * in units of the body's size, Scaling.)
+     */
+    void check_resolvable(const double size, const double distance, const std::string &what);
   } // namespace Parameters
 } // namespace FoslsContact
 

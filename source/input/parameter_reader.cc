@@ -186,6 +186,13 @@ namespace FoslsContact
       return text.rfind(lower_case, 0) == 0 || text.rfind(upper, 0) == 0;
     }
 
+    /** Whether the pattern described by @p pattern is a Patterns::FileName. */
+    bool
+    is_file_name(const std::string &pattern)
+    {
+      return pattern.rfind("[FileName", 0) == 0;
+    }
+
     /** The extension of @p file in lower case, without the dot. */
     std::string
     extension(const std::string &file)
@@ -297,6 +304,20 @@ namespace FoslsContact
           {
             throw InputError(file, ErrorLine::text(e));
           }
+        // file names relative to the scene file, as from a .prm file
+        for (const auto &[full, pattern] : entries)
+          if (is_file_name(pattern))
+            {
+              auto path = Utilities::split_string_list(full, '/');
+              const std::string name = path.back();
+              path.pop_back();
+              for (const auto &s : path)
+                prm.enter_subsection(s);
+              const std::string value = prm.get(name);
+              for (std::size_t i = 0; i < path.size(); ++i)
+                prm.leave_subsection();
+              set_entry(path, name, value, file, file);
+            }
       }
     else if (type == "prm")
       {
@@ -358,7 +379,8 @@ namespace FoslsContact
           set_entry(current,
                     Utilities::trim(line.substr(4, equal - 4)),
                     Utilities::trim(line.substr(equal + 1)),
-                    where);
+                    where,
+                    file);
         }
       else if (starts_with(line, "include "))
         include(Utilities::trim(line.substr(8)), file, where);
@@ -458,8 +480,11 @@ namespace FoslsContact
               {
                 if (!child.empty() && !child.get_child("value").empty())
                   throw InputError(where, "the \"value\" of a parameter must be a string");
-                set_entry(path, name, child.empty() ? child.data() : child.get<std::string>("value"),
-                          where);
+                set_entry(path,
+                          name,
+                          child.empty() ? child.data() : child.get<std::string>("value"),
+                          where,
+                          file);
               }
             else
               {
@@ -491,7 +516,7 @@ namespace FoslsContact
       check_section(join(std::vector<std::string>(path.begin(), path.begin() + i - 1),
                          path[i - 1]),
                     where);
-    set_entry(path, name, Utilities::trim(assignment.substr(equal + 1)), where);
+    set_entry(path, name, Utilities::trim(assignment.substr(equal + 1)), where, "");
   }
 
 
@@ -508,8 +533,9 @@ namespace FoslsContact
   void
   ParameterReader::set_entry(const std::vector<std::string> &path,
                              const std::string &             name,
-                             const std::string &             value,
-                             const std::string &             where)
+                             const std::string &             text,
+                             const std::string &             where,
+                             const std::string &             from)
   {
     const std::string full = join(path, name);
     const auto        entry = entries.find(full);
@@ -517,6 +543,21 @@ namespace FoslsContact
       throw InputError(where,
                   "there is no parameter '" + ErrorLine::quote(full) + "'" +
                     suggestion(full, false));
+    // A file name (Geometry/Mesh file) is relative to the file that sets
+    // it, like an include, and is kept absolute: used_parameters.prm and
+    // --print-parameters then name the same file from any directory.
+    std::string value = text;
+    if (is_file_name(entry->second) && !value.empty())
+      {
+        namespace fs = std::filesystem;
+        fs::path path(value);
+        if (path.is_relative() && !from.empty())
+          path = fs::path(from).parent_path() / path;
+        std::error_code error;
+        const fs::path  absolute = fs::absolute(path, error);
+        if (!error)
+          value = absolute.lexically_normal().string();
+      }
     // (a control character would be written into used_parameters.prm,
     // which could then not be read back)
     for (const char c : value)

@@ -21,6 +21,12 @@ namespace FoslsContact
   {
     for (unsigned int d = 0; d < dim; ++d)
       center[d] = hertz.contact_point[d];
+    if (dim == 3 && hertz.shape == Parameters::HertzComparison::Shape::cylinder)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          axis[d] = hertz.axis[d];
+        axis /= axis.norm();
+      }
   }
 
 
@@ -28,7 +34,10 @@ namespace FoslsContact
   double
   HertzComparison<dim>::distance(const Tensor<1, dim> &p) const
   {
-    const Tensor<1, dim> d = p - center;
+    Tensor<1, dim> d = p - center;
+    // (axis is zero but for a cylinder in 3D, whose distance is from the
+    // contact line)
+    d -= (d * axis) * axis;
     return (d - (d * normal) * normal).norm();
   }
 
@@ -47,7 +56,10 @@ namespace FoslsContact
                                  const std::vector<typename ContactRow<dim>::Values> &rows)
   {
     const double R = hertz.radius, pi = numbers::PI;
-    force          = std::abs(total_force * normal);
+    // the full model's force (per unit length for a cylinder)
+    force = hertz.force_factor * std::abs(total_force * normal);
+    if (dim == 3 && hertz.shape == Parameters::HertzComparison::Shape::cylinder)
+      force /= hertz.length;
     if (hertz.shape == Parameters::HertzComparison::Shape::cylinder)
       {
         a  = std::sqrt(4. * force * R / (pi * contact_modulus));
@@ -100,8 +112,11 @@ namespace FoslsContact
   {
     std::ostringstream out;
     out << std::setprecision(4) << "Hertz ("
-        << (dim == 2 ? "cylinder, per unit length" : "sphere") << ", R = " << hertz.radius
-        << ", E* = " << contact_modulus << "): F = " << force << ", a = " << a
+        << (cylinder() ? "cylinder, per unit length" : "sphere") << ", R = " << hertz.radius
+        << ", E* = " << contact_modulus;
+    if (hertz.force_factor != 1)
+      out << ", force factor " << hertz.force_factor;
+    out << "): F = " << force << ", a = " << a
         << ", p0 = " << p0 << "\n"
         << "       computed: contact edge between " << edge_inside << " and "
         << edge_outside << ", peak pressure " << peak << " at r = " << peak_r
@@ -117,13 +132,17 @@ namespace FoslsContact
   {
     const auto number = json_number;
     std::ostringstream out;
-    out << "{\"shape\": \"" << (dim == 2 ? "cylinder" : "sphere")
-        << "\", \"radius\": " << number(hertz.radius) << ", \"contact_point\": [";
+    out << "{\"shape\": \"" << (cylinder() ? "cylinder" : "sphere")
+        << "\", \"radius\": " << number(hertz.radius)
+        << ", \"force_factor\": " << number(hertz.force_factor) << ", \"contact_point\": [";
     for (unsigned int d = 0; d < dim; ++d)
       out << (d ? ", " : "") << number(center[d]);
     out << "], \"normal\": [";
     for (unsigned int d = 0; d < dim; ++d)
       out << (d ? ", " : "") << number(normal[d]);
+    out << "], \"axis\": [";
+    for (unsigned int d = 0; d < dim; ++d)
+      out << (d ? ", " : "") << number(axis[d]);
     out << "], \"contact_modulus\": " << number(contact_modulus)
         << ", \"force\": " << number(force) << ", \"a\": " << number(a)
         << ", \"p0\": " << number(p0) << ", \"edge_inside\": " << number(edge_inside)
@@ -131,6 +150,13 @@ namespace FoslsContact
         << ", \"peak_r\": " << number(peak_r) << ", \"pressure_error\": " << number(pressure_error)
         << "}";
     return out.str();
+  }
+
+  template <int dim>
+  bool
+  HertzComparison<dim>::cylinder() const
+  {
+    return hertz.shape == Parameters::HertzComparison::Shape::cylinder;
   }
 
   template class HertzComparison<2>;

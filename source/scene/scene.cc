@@ -1,9 +1,9 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
-#include <deal.II/grid/grid_reordering.h>
-#include <deal.II/grid/manifold_lib.h>
 
+#include <fosls_contact/scene/boundary_manifolds.h>
+#include <fosls_contact/scene/curved_body.h>
 #include <fosls_contact/scene/scene.h>
 
 #include <muParser.h>
@@ -36,6 +36,23 @@ namespace FoslsContact
     : geometry(prm.geometry)
     , dirichlet_masks(prm.boundary_conditions.dirichlet_components)
   {
+    if (geometry.shape == Parameters::Geometry::Shape::file)
+      {
+        mesh_file = std::make_unique<MeshFile<dim>>(geometry.mesh_file);
+        // (as for the box and the half disc: a body far from the origin
+        // against its size cannot be refined in double precision)
+        const auto box      = mesh_file->bounding_box();
+        double     size     = 0;
+        double     distance = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            size     = std::max(size, box.side_length(d));
+            distance = std::max({distance,
+                                 std::abs(box.get_boundary_points().first[d]),
+                                 std::abs(box.get_boundary_points().second[d])});
+          }
+        Parameters::check_resolvable(size, distance, "the size of the " + mesh_file->name());
+      }
     reference.length = reference_length(prm);
     reference.stress =
       prm.scaling.reference_stress > 0 ? prm.scaling.reference_stress : prm.material.mu;
@@ -146,18 +163,27 @@ namespace FoslsContact
     if (prm.scaling.reference_length > 0)
       return prm.scaling.reference_length;
     // the largest side of the coarse mesh's bounding box (of the half
-    // disc: its diameter)
+    // disc and the half ball: their diameter)
     double length = 0;
-    if (geometry.shape == Parameters::Geometry::Shape::box)
+    switch (geometry.shape)
       {
-        for (unsigned int d = 0; d < dim; ++d)
-          length = std::max(length, geometry.upper_corner[d] - geometry.lower_corner[d]);
-        AssertThrow(std::isfinite(length),
-                    ExcMessage("parameters 'Geometry/Box lower corner' and 'Box upper "
-                               "corner' span more than the largest double precision number"));
+        case Parameters::Geometry::Shape::box:
+          for (unsigned int d = 0; d < dim; ++d)
+            length = std::max(length, geometry.upper_corner[d] - geometry.lower_corner[d]);
+          AssertThrow(std::isfinite(length),
+                      ExcMessage("parameters 'Geometry/Box lower corner' and 'Box upper "
+                                 "corner' span more than the largest double precision number"));
+          break;
+        case Parameters::Geometry::Shape::file:
+          for (unsigned int d = 0; d < dim; ++d)
+            length = std::max(length, mesh_file->bounding_box().side_length(d));
+          break;
+        case Parameters::Geometry::Shape::half_cylinder:
+          length = std::max(2. * geometry.radius, geometry.length);
+          break;
+        default:
+          length = 2. * geometry.radius;
       }
-    else
-      length = 2. * geometry.radius;
     return length;
   }
 
@@ -175,6 +201,7 @@ namespace FoslsContact
     // positive). Refinement moves the boundary vertices onto the circle, so
     // the finer levels are checked too.
     unsigned int first_bad_level = numbers::invalid_unsigned_int;
+    Point<dim>   bad_center;
     for (const auto &cell : tria.cell_iterators())
       {
         Point<dim> vertices[GeometryInfo<dim>::vertices_per_cell];
@@ -184,20 +211,56 @@ namespace FoslsContact
         Tensor<0, dim> forms[GeometryInfo<dim>::vertices_per_cell];
         GeometryInfo<dim>::alternating_form_at_vertices(vertices, forms);
         for (const unsigned int v : cell->vertex_indices())
-          if (!(double(forms[v]) > 1e-10 * std::pow(diameter, double(dim))))
-            first_bad_level = std::min<unsigned int>(first_bad_level, cell->level());
+          if (!(double(forms[v]) > 1e-10 * std::pow(diameter, double(dim))) &&
+              static_cast<unsigned int>(cell->level()) < first_bad_level)
+            {
+              first_bad_level = cell->level();
+              bad_center      = cell->center();
+            }
       }
-    first_bad_level = Utilities::MPI::min(first_bad_level, comm);
-    if (first_bad_level == numbers::invalid_unsigned_int)
+    const unsigned int level = Utilities::MPI::min(first_bad_level, comm);
+    if (level == numbers::invalid_unsigned_int)
       return;
-    const std::string where = "the mesh has an inverted or degenerate cell on level " +
-                              std::to_string(first_bad_level + 1) +
-                              " (a corner whose Jacobian is not positive)";
-    AssertThrow(geometry.shape != Parameters::Geometry::Shape::half_disc,
-                ExcMessage("parameter 'Geometry/Grading' = " + std::to_string(geometry.grading) +
-                           " distorts the half disc: " + where +
-                           "; use a smaller grading"));
-    AssertThrow(false, ExcMessage(where + "; check 'Geometry'"));
+    // where it is: the cell of the first process that has one on that level
+    const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int first = Utilities::MPI::min(first_bad_level == level ?
+                                                     rank :
+                                                     numbers::invalid_unsigned_int,
+                                                   comm);
+    bad_center               = Utilities::MPI::broadcast(comm, bad_center, first);
+    std::ostringstream where_text;
+    where_text << "an inverted or degenerate cell on level " << level + 1 << " at (";
+    for (unsigned int d = 0; d < dim; ++d)
+      where_text << (d ? ", " : "") << bad_center[d] * reference.length;
+    where_text << ") (a corner whose Jacobian is not positive)";
+    const std::string where = where_text.str();
+    switch (geometry.shape)
+      {
+        case Parameters::Geometry::Shape::box:
+          AssertThrow(false, ExcMessage("the mesh has " + where + "; check 'Geometry'"));
+          break;
+        case Parameters::Geometry::Shape::file:
+          AssertThrow(false,
+                      ExcMessage("the " + mesh_file->name() + " has " + where +
+                                 "; check the mesh and 'Geometry/Manifolds'" +
+                                 (mesh_file->distance_in_cells() > 1e5 ?
+                                    " (it lies far from the origin against the size of "
+                                    "its cells: deal.II's reader can turn a cell inside "
+                                    "out there; move the origin near the body)" :
+                                    "")));
+          break;
+        default:
+          {
+            const auto s = geometry.shape;
+            AssertThrow(false,
+                        ExcMessage("parameter 'Geometry/Grading' = " +
+                                   std::to_string(geometry.grading) + " distorts the " +
+                                   (s == Parameters::Geometry::Shape::half_disc ? "half disc" :
+                                    s == Parameters::Geometry::Shape::half_ball ? "half ball" :
+                                                                                  "half cylinder") +
+                                   ": the mesh has " + where + "; use a smaller grading"));
+          }
+      }
   }
 
 
@@ -328,71 +391,17 @@ namespace FoslsContact
           }
         GridGenerator::subdivided_hyper_rectangle(tria, repetitions, p1, p2, true);
       }
+    else if (geometry.shape == Parameters::Geometry::Shape::file)
+      {
+        tria.copy_triangulation(mesh_file->triangulation());
+        GridTools::scale(1. / reference.length, tria);
+        BoundaryManifolds<dim>(geometry.manifolds, reference.length)
+          .attach(tria, mesh_file->name());
+        check_cell_shapes(tria, MPI_COMM_SELF);
+      }
     else
       {
-        // The lower half of a disc: deal.II's half ball (cut plane
-        // perpendicular to x) turned by -90 degrees, refined to make a
-        // coarse mesh of useful size, then graded toward the lowest point
-        // in polar coordinates (angle from the downward direction and
-        // distance to the curved boundary), which keeps the circle and the
-        // flat top in place.
-        Assert(dim == 2, ExcInternalError());
-        Point<dim> center;
-        for (unsigned int d = 0; d < dim; ++d)
-          center[d] = geometry.center[d] / reference.length;
-        const double radius = geometry.radius / reference.length;
-
-        Triangulation<dim> half;
-        GridGenerator::half_hyper_ball(half, Point<dim>(), radius);
-        half.refine_global(geometry.disc_refinements);
-        GridGenerator::flatten_triangulation(half, tria);
-
-        const double gamma = geometry.grading;
-        GridTools::transform(
-          [gamma, radius, center](const Point<dim> &p) {
-            // p is in the half ball x >= 0 around the origin.
-            const double r     = p.norm();
-            const double theta = std::atan2(p[1], p[0]); // in [-pi/2, pi/2]
-            const double half_pi = numbers::PI / 2;
-            const double t       = std::abs(theta) / half_pi;
-            const double theta_g =
-              (theta < 0 ? -1. : 1.) * half_pi * std::pow(t, gamma);
-            const double s   = 1. - r / radius;
-            const double r_g = radius * (1. - std::pow(s, gamma));
-            // rotate by -90 degrees: the x axis (theta = 0) points down.
-            Point<dim> q;
-            q[0] = center[0] + r_g * std::sin(theta_g);
-            q[1] = center[1] - r_g * std::cos(theta_g);
-            return q;
-          },
-          tria);
-
-        // RT0 needs consistently oriented lines: otherwise the normal flux
-        // of a shared face means opposite directions in the two cells, the
-        // space is not H(div)-conforming and the embedding matrices of the
-        // two parents of a child face disagree. The refined half ball is
-        // not consistently oriented, so its cells are reordered (the test
-        // tests/unit/level_transfer pins the exact embedding on this mesh).
-        {
-          auto description = GridTools::get_coarse_mesh_description(tria);
-          GridTools::consistently_order_cells(std::get<1>(description));
-          tria.clear();
-          tria.create_triangulation(std::get<0>(description),
-                                    std::get<1>(description),
-                                    SubCellData());
-        }
-        // boundary ids: 0 curved, 1 flat top (by position).
-        for (const auto &cell : tria.active_cell_iterators())
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary())
-              {
-                const bool top =
-                  std::abs(face->center()[1] - center[1]) < 1e-10 * radius &&
-                  std::abs(face->vertex(0)[1] - center[1]) < 1e-10 * radius;
-                face->set_boundary_id(top ? 1 : 0);
-                face->set_manifold_id(top ? numbers::flat_manifold_id : 0);
-              }
-        tria.set_manifold(0, SphericalManifold<dim>(center));
+        CurvedBody::make(geometry, reference.length, tria);
         check_cell_shapes(tria, MPI_COMM_SELF);
       }
 
@@ -401,18 +410,23 @@ namespace FoslsContact
     std::set<types::boundary_id> mesh_ids;
     for (const auto id : tria.get_boundary_ids())
       mesh_ids.insert(id);
+    const std::string mesh = mesh_file ? "the " + mesh_file->name() : "the mesh";
     for (const auto id : mesh_ids)
       AssertThrow(is_dirichlet(id) || is_neumann(id) || is_contact(id),
-                  ExcMessage("boundary id " + std::to_string(id) +
-                             " of the mesh has no condition: name it in "
+                  ExcMessage("boundary id " + std::to_string(id) + " of " + mesh +
+                             " has no condition: name it in "
                              "'Boundary conditions' (Dirichlet, Neumann or "
                              "Contact boundary ids)"));
+    std::string existing;
+    for (const auto id : mesh_ids)
+      existing += (existing.empty() ? "" : ", ") + std::to_string(id);
     for (const auto &ids : {dirichlet_ids, neumann_ids, contact_ids})
       for (const auto id : ids)
         AssertThrow(mesh_ids.count(id) > 0,
                     ExcMessage("boundary id " + std::to_string(id) +
                                " named in 'Boundary conditions' does not exist "
-                               "on this mesh"));
+                               "on " + (mesh_file ? mesh : "this mesh") +
+                               " (its boundary ids: " + existing + ")"));
   }
 
 

@@ -37,7 +37,7 @@ SCENES = ["square.prm", "hertz.prm", "cube3d.prm", "elasticity_mms.prm",
           "square_tilted_obstacle.prm"]
 TIMEOUT = 60
 # valid values that would make a case slow (big meshes, many iterations)
-SAFE_MAX = {"Levels": 3, "Box subdivisions": 4, "Half disc coarse refinements": 3,
+SAFE_MAX = {"Levels": 3, "Box subdivisions": 4, "Coarse refinements": 3, "Length subdivisions": 4,
             "Threads": 4, "Max iterations": 50, "Pre smoothing": 5, "Post smoothing": 5,
             "Krylov steps": 50, "Definiteness check max dofs": 20000}
 NUMBERS = ["0", "-0", "1", "-1", "0.5", "1e-300", "1e300", "1e308", "1e309", "-1e309",

@@ -15,6 +15,7 @@ test fails even if its .output file was regenerated carelessly. Each run
 leaves run_NN_<name>.cmd (the command line), .screen, .stderr and its
 output directory in the work directory, for inspection.
 """
+import csv
 import json
 import math
 import os
@@ -366,3 +367,86 @@ def leftovers(directory):
     name = os.path.basename(os.path.abspath(directory))
     return sorted(n for n in os.listdir(parent)
                   if n.startswith("." + name + ".staging") or n == "." + name + ".lock")
+
+
+def check_hertz(run, label, shape, E, nu, radius, centre, normal, factor=1., axis=None,
+                length=None):
+    """summary.json's "hertz" of @p run (scene section Hertz comparison with
+    @p shape, @p radius, contact point @p centre; obstacle @p normal;
+    material @p E, @p nu; Force factor @p factor; for a cylinder in 3D its
+    @p axis and contact @p length) as recomputed from the contact force and
+    contact.csv to 1e-8: Hertz's a and p0, the contact edge, peak and l2
+    pressure error; and Hertz's a between the last vertex in contact and
+    the next. Prints one line; returns (peak, p0, a, inside, outside)."""
+    h = run["hertz"] or {}
+    dim = len(centre)
+    E_star = E / (1. - nu * nu)
+    F = factor * abs(sum(f * n for f, n in zip(run["contact_force"], normal)))
+    if axis:
+        F /= length
+    if shape == "cylinder":
+        a = math.sqrt(4. * F * radius / (math.pi * E_star))
+        p0 = 2. * F / (math.pi * a)
+    else:
+        a = (3. * F * radius / (4. * E_star)) ** (1. / 3.)
+        p0 = 3. * F / (2. * math.pi * a * a)
+    with open(os.path.join(run.directory, "contact.csv")) as f:
+        rows = list(csv.DictReader(f))
+    unit_axis = [x / math.sqrt(sum(y * y for y in axis)) for x in axis] if axis else [0.] * dim
+
+    def r_of(row):
+        p = [float(row["xyz"[d]]) - centre[d] for d in range(dim)]
+        for n in (unit_axis, normal):
+            pn = sum(p[d] * n[d] for d in range(dim))
+            p = [p[d] - pn * n[d] for d in range(dim)]
+        return math.sqrt(sum(x * x for x in p))
+
+    def hertz(r):
+        return p0 * math.sqrt(1. - r * r / (a * a)) if r < a else 0.
+
+    inside = max(r_of(x) for x in rows if x["active"] == "1")
+    outside = min(r_of(x) for x in rows if x["active"] == "0" and r_of(x) > inside)
+    peak = max(-float(x["sigma_nn"]) for x in rows)
+    error = math.sqrt(sum((-float(x["sigma_nn"]) - hertz(r_of(x))) ** 2 for x in rows) /
+                      sum(hertz(r_of(x)) ** 2 for x in rows))
+    expected = {"force": F, "contact_modulus": E_star, "a": a, "p0": p0,
+                "edge_inside": inside, "edge_outside": outside, "peak": peak,
+                "pressure_error": error, "force_factor": factor}
+    wrong = [k for k, v in expected.items() if not relative_difference(h.get(k), v) <= 1e-8]
+    check(not wrong, label + ": summary.json's hertz entries as recomputed from "
+          "contact.csv to 1e-8" + (" (not: %s)" % ", ".join(wrong) if wrong else ""))
+    print("%s: F %s, a %s between %s and %s, p0 %s, peak %s, pressure error %s"
+          % (label, rounded(F, 5), rounded(a, 4), rounded(inside, 4), rounded(outside, 4),
+             rounded(p0, 4), rounded(peak, 4), rounded(error, 3)))
+    check(inside < a < outside, label + ": Hertz's a between the last vertex in contact "
+          "and the next")
+    return peak, p0, a, inside, outside
+
+
+def check_same(runs, label, tolerance, last_tolerance=None):
+    """All @p runs converged to the first one's contact force and functional,
+    to @p tolerance (the last one to @p last_tolerance if given)."""
+    check(all(r.ok() and r["converged"] is True for r in runs), label + ": all converged")
+    tolerances = [tolerance] * (len(runs) - 2) + [last_tolerance or tolerance]
+    check(all(relative_difference(r["contact_force"], runs[0]["contact_force"]) <= t and
+              relative_difference(r["functional"], runs[0]["functional"]) <= t
+              for r, t in zip(runs[1:], tolerances)),
+          label + ": the same contact force and J to %g" % tolerance +
+          (" (the last one to %g)" % last_tolerance if last_tolerance else ""))
+
+
+def in_contact(run):
+    """The number of contact vertices of @p run in contact (contact.csv)."""
+    with open(os.path.join(run.directory, "contact.csv")) as f:
+        return sum(1 for row in csv.DictReader(f) if row["active"] == "1")
+
+
+def check_shipped(run, label):
+    """A shipped Hertz scene: converged, monotone and feasible, and at least
+    8 contact vertices in contact (enough to compare with Hertz)."""
+    describe(run, label, ("dofs", "converged", "active"))
+    check(run["converged"] is True, label + ": converged")
+    check_monotone_feasible(run, label)
+    n = in_contact(run)
+    print("%s: %d contact vertices in contact" % (label, n))
+    check(n >= 8, label + ": at least 8 contact vertices in contact")

@@ -27,6 +27,9 @@ namespace FoslsContact
    * names, so `C_compl` becomes `C\xC0mpl`). Every value is still set
    * through ParameterHandler::set(), which checks it against its pattern.
    *
+   * A file name in a scene (`Geometry/Mesh file`) is relative to the file
+   * that names it, like an include; with --set, to the current directory.
+   *
    * Every error is thrown as InputError, with where it is
    * (`file:line`, or the --set argument) and one line saying what is
    * wrong: an unknown name comes with the closest declared one ("did you
@@ -68,12 +71,16 @@ namespace FoslsContact
 
     /**
      * Set the parameter @p name of the section @p sections to @p value,
-     * or throw an InputError at @p where.
+     * or throw an InputError at @p where. A file name (a parameter with a
+     * Patterns::FileName) is made absolute, relative to the directory of
+     * the scene file @p from that sets it, or to the current directory if
+     * @p from is empty (--set).
      */
     void set_entry(const std::vector<std::string> &sections,
                    const std::string &             name,
                    const std::string &             value,
-                   const std::string &             where);
+                   const std::string &             where,
+                   const std::string &             from);
 
     /** An Error at @p where if the section @p path is not declared. */
     void check_section(const std::string &path, const std::string &where) const;

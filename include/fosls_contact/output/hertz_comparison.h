@@ -20,12 +20,15 @@ namespace FoslsContact
    *
    * One body is rigid, the other elastic with E and nu, so the contact
    * modulus is E* = E / (1 - nu^2). With F the normal component of the
-   * computed contact force (per unit length for a cylinder):
+   * computed contact force times the Force factor (the full model's force,
+   * of a model that is a symmetric part of it), per unit length for a
+   * cylinder (in 3D divided by the contact line's Length):
    *   cylinder: a = sqrt(4 F R / (pi E*)),  p0 = 2 F / (pi a),
    *   sphere:   a = (3 F R / (4 E*))^(1/3), p0 = 3 F / (2 pi a^2),
    * and p(r) = p0 sqrt(1 - r^2 / a^2) for r < a, with r the distance from
    * the contact point in the plane of contact (orthogonal to the obstacle
-   * normal there). Hertz assumes a half-space and a contact small against
+   * normal there; for a cylinder in 3D, from the contact line through the
+   * contact point along the Axis). Hertz assumes a half-space and a contact small against
    * R; the scenes are bodies of finite size, so expect agreement to a few
    * percent, improving with the mesh.
    */
@@ -59,10 +62,13 @@ namespace FoslsContact
   private:
     /** The distance of @p p from the contact point, in the plane of contact. */
     double distance(const Tensor<1, dim> &p) const;
+    bool   cylinder() const;
 
     const Parameters::HertzComparison hertz;
     double                            contact_modulus; ///< E*
     Tensor<1, dim>                    normal, center;
+    /** The unit axis of a cylinder in 3D, else zero. */
+    Tensor<1, dim>                    axis;
 
     double force = 0, a = 0, p0 = 0;
     /** Largest r of a vertex in contact, smallest r of one beyond it. */

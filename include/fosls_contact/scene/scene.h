@@ -6,6 +6,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <fosls_contact/parameters.h>
+#include <fosls_contact/scene/mesh_file.h>
 #include <fosls_contact/scene/scaled_function.h>
 #include <fosls_contact/scene/scaling.h>
 
@@ -89,8 +90,9 @@ namespace FoslsContact
 
     /**
      * Refuse a mesh with a cell whose corner has a Jacobian determinant
-     * <= 0 on any level (a graded half disc bent too far). Collective on
-     * @p comm.
+     * <= 0 on any level (a graded half disc bent too far, a twisted cell
+     * of a mesh file, a file mesh's manifold that pulls a refined boundary
+     * vertex through its cell). Collective on @p comm.
      */
     void check_cell_shapes(const Triangulation<dim> &tria, const MPI_Comm comm) const;
 
@@ -106,6 +108,8 @@ namespace FoslsContact
     double reference_length(const Parameters::AllParameters &parameters) const;
 
     const Parameters::Geometry geometry;
+    /** The mesh of Geometry/Mesh file (Shape = file), in the scene's units. */
+    std::unique_ptr<const MeshFile<dim>> mesh_file;
     Scaling                    reference;
     Parameters::Material       dimensionless_material;
     std::map<std::string, double> constants;

@@ -473,6 +473,8 @@ namespace FoslsContact
           << (monitor->stopped_at_round_off() ?
                 " (corrections at their round-off floor)" :
                 "");
+    if (monitor->stop_reason() == "diverged")
+      pcout << ": J increased";
     if (monitor->stop_reason() == "stalled")
       pcout << ": stalled at a rate of " << std::fixed << std::setprecision(4)
             << monitor->asymptotic_rate() << " per iteration, its error estimate "
@@ -791,6 +793,17 @@ namespace FoslsContact
           << (parameters.solver.krylov_steps == 0 ?
                 " (the default solver, Solver/Krylov steps > 0, converges there)" :
                 "");
+    else if (monitor->stop_reason() == "diverged")
+      {
+        const auto &h = monitor->get_history();
+        const double J_unit = scene.scaling().functional(dim);
+        why << "not converged: J increased in iteration " << h.size() - 1 << " from "
+            << std::scientific << std::setprecision(3) << J_unit * h[h.size() - 2].functional.total
+            << " to " << J_unit * h.back().functional.total
+            << ", which a monotone solver's step cannot do: its multilevel model of the "
+               "functional is wrong on this mesh ('Solver/Type' = active set solves the "
+               "problem directly)";
+      }
     else
       why << "not converged within 'Solver/Max iterations' = "
           << parameters.solver.max_iterations;

@@ -79,6 +79,12 @@ namespace FoslsContact
         stop   = true;
         reason = "stalled";
       }
+    if (diverged())
+      {
+        has_converged = false;
+        stop          = true;
+        reason = "diverged";
+      }
     const bool out_of_iterations = r.iteration >= parameters.max_iterations;
     if (!stop && out_of_iterations)
       reason = "iteration limit";
@@ -99,6 +105,24 @@ namespace FoslsContact
           << std::setprecision(3) << r.rate << "  active = " << r.active
           << std::endl;
     return stop || out_of_iterations;
+  }
+
+
+  bool
+  Monitor::diverged() const
+  {
+    // Every step of the monotone solvers (projected Gauss-Seidel, the
+    // multigrid cycles and their Newton steps) lowers J or leaves it, so a
+    // J that grows by more than its evaluation error over an iteration
+    // means the solver's local model is not the functional's; going on
+    // would hand the user an iterate growing without bound (measured: J
+    // 3.5e-6, 2.8e31, 6.6e81). The active set method is no descent method
+    // and does not ask for the check.
+    if (!detect_divergence || history.size() < 2)
+      return false;
+    const double previous = history[history.size() - 2].functional.total,
+                 current  = history.back().functional.total;
+    return current > previous + divergence_tolerance * std::abs(previous);
   }
 
 

@@ -83,6 +83,7 @@ namespace FoslsContact
     update_ghosts(x);
     qp.project_to_feasible(x);
     observer.enable_stall_detection();
+    observer.enable_divergence_detection();
     observer.start(x);
     {
       const ScopedTime timing(counters.operators);

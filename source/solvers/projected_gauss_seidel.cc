@@ -11,6 +11,7 @@ namespace FoslsContact
   {
     update_ghosts(x);
     distributed.project_to_feasible(x);
+    observer.enable_divergence_detection();
     observer.start(x);
     // The sweep is sequential in the order of the support points: it runs
     // on the first process, on the gathered problem (the baseline, meant

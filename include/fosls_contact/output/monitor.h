@@ -92,6 +92,21 @@ namespace FoslsContact
      */
     void enable_stall_detection() override { detect_stalls = true; }
 
+    /**
+     * J may grow from one iteration to the next by this much, relative, and
+     * still count as the round-off of its evaluation (J is summed in twice
+     * the working precision, ConstrainedQP::parts()).
+     */
+    static constexpr double divergence_tolerance = 1e-6;
+    /**
+     * Whether the last iteration of a descent method (one that called
+     * enable_divergence_detection()) increased J beyond
+     * divergence_tolerance: report() then ends the run as not converged,
+     * stop_reason() "diverged".
+     */
+    bool diverged() const;
+    void enable_divergence_detection() override { detect_divergence = true; }
+
     unsigned int energy_increases() const { return n_energy_increases; }
     /** Whether the run stopped at the round-off floor of the corrections. */
     bool stopped_at_round_off() const { return at_floor; }
@@ -185,6 +200,7 @@ namespace FoslsContact
     bool                          floor_stagnated        = false;
     double                        functional_unit        = 1.;
     bool                          detect_stalls          = false;
+    bool                          detect_divergence      = false;
     std::string                   reason;
     double                        stall_error            = 0;
   };

@@ -37,6 +37,12 @@ namespace FoslsContact
      * monotone multigrid): let report() end a run that stalls.
      */
     virtual void enable_stall_detection() = 0;
+    /**
+     * For a descent method (projected Gauss-Seidel, the monotone
+     * multigrid), whose steps never increase J: let report() end a run
+     * whose J grows.
+     */
+    virtual void enable_divergence_detection() = 0;
 
     /** The iteration applied @p n multigrid cycles (on the finest level). */
     virtual void note_cycles(const unsigned int n) = 0;

@@ -130,8 +130,8 @@ namespace FoslsContact
     zero_round_off(matrix, partitioner, round_off_drop);
     ghost_rows->import_into(matrix);
     // the small parts first: the memory they free takes A's new pattern
-    // (the heap keeps freed memory for reuse, Open MPI's allocator hooks
-    // return none of it to the system)
+    // (freed memory stays with the process, measured: the resident memory
+    // does not drop when the full-pattern values are freed)
     compress(matrix_eq, sparsity_eq);
     compress(matrix_compl, sparsity_compl);
     compress(matrix, sparsity);

@@ -546,7 +546,11 @@ namespace FoslsContact
     // peak resident memory: all processes together, and the largest one
     summary["peak_rss_mb"]             = number(Utilities::MPI::sum(peak_mb, comm));
     summary["peak_rss_mb_per_process"] = number(Utilities::MPI::max(peak_mb, comm));
-    summary["memory_by_phase"]         = memory_by_phase_json();
+    std::vector<std::string> phases;
+    for (const auto &[phase, rss_mb, peak_rss_mb] : phase_memory)
+      phases.push_back("{\"phase\": \"" + phase + "\", \"rss_mb\": " + number(rss_mb) +
+                       ", \"peak_rss_mb\": " + number(peak_rss_mb) + "}");
+    summary["memory_by_phase"] = json_array(phases);
     summary["mpi_processes"] = std::to_string(Utilities::MPI::n_mpi_processes(comm));
     // communication of the solve: point-to-point exchanges of the busiest
     // process, values sent by all; and the ghost DoFs per level (all
@@ -725,21 +729,6 @@ namespace FoslsContact
     phase_memory.push_back({phase,
                             Utilities::MPI::sum(memory.VmRSS / 1024., comm),
                             Utilities::MPI::sum(memory.VmHWM / 1024., comm)});
-  }
-
-
-  template <int dim>
-  std::string
-  FoslsProblem<dim>::memory_by_phase_json() const
-  {
-    std::ostringstream json;
-    json << "[";
-    for (unsigned int i = 0; i < phase_memory.size(); ++i)
-      json << (i ? ", " : "") << "{\"phase\": \"" << phase_memory[i].phase
-           << "\", \"rss_mb\": " << number(phase_memory[i].rss_mb)
-           << ", \"peak_rss_mb\": " << number(phase_memory[i].peak_rss_mb) << "}";
-    json << "]";
-    return json.str();
   }
 
 

@@ -122,8 +122,6 @@ namespace FoslsContact
     std::vector<PhaseMemory> phase_memory;
     /** Append the resident memory after @p phase. Collective. */
     void record_memory(const std::string &phase);
-    /** phase_memory as a JSON array (the summary's memory_by_phase). */
-    std::string memory_by_phase_json() const;
     /** What this process sent point to point during the solve. */
     CommunicationCounter                 solve_communication;
   };

@@ -1,4 +1,5 @@
 #include <fosls_contact/solvers/box_qp.h>
+#include <fosls_contact/solvers/spd_inverse.h>
 
 #include <cmath>
 #include <limits>
@@ -8,11 +9,8 @@ namespace FoslsContact
   BoxQP::BoxQP(const FullMatrix<double> &M)
     : matrix(M)
   {
-    // gauss_jordan pivots; FullMatrix::invert uses cofactor formulas for
-    // n <= 4, which lose all digits on the ill-conditioned patches of
-    // large C_eq on distorted cells
     inverse = M;
-    inverse.gauss_jordan();
+    invert_spd(inverse);
   }
 
 
@@ -99,7 +97,7 @@ namespace FoslsContact
                 for (unsigned int b = 0; b < free.size(); ++b)
                   M_ff(a, b) = matrix(free[a], free[b]);
               }
-            M_ff.gauss_jordan();
+            invert_spd(M_ff);
             M_ff.vmult(sol, rhs);
             for (unsigned int a = 0; a < free.size(); ++a)
               trial[free[a]] = sol[a];

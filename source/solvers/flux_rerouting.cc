@@ -2,6 +2,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <fosls_contact/solvers/flux_rerouting.h>
+#include <fosls_contact/solvers/spd_inverse.h>
 
 #include <algorithm>
 
@@ -189,9 +190,7 @@ namespace FoslsContact
         for (const auto &[son, value] : d)
           rhs[a] -= entry(l, A, local[a], son) * value;
       }
-    // gauss_jordan pivots (FullMatrix::invert uses cofactor formulas for
-    // n <= 4, see BoxQP)
-    A_local.gauss_jordan();
+    invert_spd(A_local);
     A_local.vmult(e, rhs);
     const double column = hierarchy.level(l - 1).global(face.coarse_dof);
     for (unsigned int a = 0; a < n; ++a)

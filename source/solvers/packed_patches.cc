@@ -5,6 +5,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <fosls_contact/qp/level_algebra.h>
+#include <fosls_contact/solvers/spd_inverse.h>
 
 #include <algorithm>
 #include <atomic>
@@ -249,7 +250,7 @@ namespace FoslsContact
           M                          = level.qps[level.box_qp[k]].inverse_matrix();
         }
       else
-        M.gauss_jordan();
+        invert_spd(M);
       double *inverse = level.inverse.data() + level.inverse_start[k];
       for (unsigned int a = 0; a < n; ++a)
         for (unsigned int b = a; b < n; ++b)
@@ -343,7 +344,7 @@ namespace FoslsContact
             for (unsigned int b = 0; b < m; ++b)
               M(a, b) = qp.matrix_entry(patch.moving[a], patch.moving[b]);
           if (m > 0)
-            M.gauss_jordan(); // pivots, as in BoxQP
+            invert_spd(M);
           patch.inverse.assign(M.begin(), M.end());
         }
   }

@@ -28,7 +28,7 @@
 # (the solution has 47) and creeps at a rate of 1.000 (J -1% per 10
 # cycles, measured over 300 cycles), the known weakness of the plain
 # cycle where an active DoF must be released; the monitor ends it as
-# stalled after 14 cycles (test plain_cycle_stall). The default solver
+# stalled after 15 cycles (test plain_cycle_stall). The default solver
 # converges from a zero start in 4-5 iterations.
 # Every run also checks the second visits of the W-cycle that take their
 # coarse defect as r_H - alpha A_H c from the first visit (Solver/Check

@@ -89,6 +89,80 @@ def measure(binaries, scene, level, runs, threads, tag):
     return best
 
 
+def finest(results, tag):
+    """The summary of the finest level of @p tag that ran (None if none)."""
+    ran = [level for (t, level), best in results.items() if t == tag and best]
+    return (max(ran), results[(tag, max(ran))]["this"]) if ran else (None, None)
+
+
+def targets(results):
+    """The targets of the issue on whole runs, each with its measured figure
+    and whether it is met."""
+    rows = []
+
+    def row(target, measured, met):
+        rows.append(f"| {target} | {measured} | {'met' if met else 'missed'} |")
+
+    for tag, level in (("square", 9), ("cube", 6)):
+        best = results.get((tag, level))
+        if best:
+            s = best["this"]
+            ratio = s["wall_s"] / s["time_solve_s"]
+            row(f"wall <= {TARGETS['wall_over_solve']} x solve, {tag} level {level}",
+                f"{ratio:.2f} ({s['wall_s']:.2f} s / {s['time_solve_s']:.2f} s)",
+                ratio <= TARGETS["wall_over_solve"])
+    for tag in ("square", "cube"):
+        level, s = finest(results, tag)
+        if s:
+            per_dof = s["peak_rss_mb"] * 1024 * 1024 / s["dofs"]
+            limit = TARGETS["bytes_per_dof"][tag]
+            row(f"peak memory <= {limit} bytes per DoF, {tag} (finest level measured)",
+                f"{per_dof:.0f} (level {level})", per_dof <= limit)
+    best = results.get(("cube", 7))
+    row("the cube at level 7 in under 20 GB",
+        f"{best['this']['peak_rss_mb'] / 1024:.1f} GB, {best['this']['dofs']} DoFs" if best
+        else "not run", bool(best) and best["this"]["peak_rss_mb"] < 20 * 1024)
+    forces = {level: results[("square", level)]["this"]
+              for level in range(5, 10) if results.get(("square", level))}
+    if all(level in forces for level in (7, 8, 9)):
+        f = {level: s["contact_force"][1] for level, s in forces.items()}
+        q = (f[9] - f[8]) / (f[8] - f[7])
+        limit = f[9] + (f[9] - f[8]) * q / (1 - q)
+        within = [level for level in sorted(f) if abs(f[level] - limit) <= 1.5e-5 * abs(limit)]
+        wall = forces[within[0]]["wall_s"] if within else None
+        row("the square's contact force to 1.5e-5 in <= 3.5 s wall",
+            f"level {within[0]}, {wall:.2f} s" if within else "no level within 1.5e-5",
+            bool(within) and wall <= 3.5)
+    if not rows:
+        return []
+    return ["## Targets\n", "| target | measured | |", "|---|---|---|"] + rows + [""]
+
+
+def phases(results):
+    """Where the wall time of the largest runs goes: the sections of
+    summary.json's time_sections_s, and what is left (start-up, the data
+    checks, the output, which is written after summary.json)."""
+    cases = [(tag, level) for tag, level in (("square", 9), ("cube", 6), ("cube", 7))
+             if results.get((tag, level))]
+    if not cases:
+        return []
+    names = ["Setup: mesh, DoFs, levels", "Assembly", "Definiteness check", "Setup: solver",
+             "Solve"]
+    lines = ["## Where the wall time goes (seconds)\n",
+             "| phase | " + " | ".join(f"{t} level {l}" for t, l in cases) + " |",
+             "|---|" + "---|" * len(cases)]
+    for name in names + ["the rest (start-up, data checks, output)"]:
+        cells = []
+        for case in cases:
+            s = results[case]["this"]
+            sections = s["time_sections_s"]
+            value = sections.get(name, 0.) if name in names else \
+                s["wall_s"] - sum(sections.get(n, 0.) for n in names)
+            cells.append(f"{value:.2f}")
+        lines.append(f"| {name} | " + " | ".join(cells) + " |")
+    return lines + [""]
+
+
 def main():
     a = arguments()
     os.makedirs(RES, exist_ok=True)
@@ -160,6 +234,9 @@ def main():
                          f"{s['wall_s']:.2f} s wall.\n")
         else:
             lines.append(" No level is within 1.5e-5.\n")
+
+    lines += targets(results)
+    lines += phases(results)
 
     # memory by structure, where the build reports it
     for (tag, level), best in results.items():

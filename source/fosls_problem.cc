@@ -6,6 +6,7 @@
 #include <fosls_contact/assembly/fosls_assembler.h>
 #include <fosls_contact/build_info.h>
 #include <fosls_contact/fosls_problem.h>
+#include <fosls_contact/output/contact_table.h>
 #include <fosls_contact/output/hertz_comparison.h>
 #include <fosls_contact/output/json.h>
 #include <fosls_contact/output/postprocessor.h>
@@ -682,7 +683,7 @@ namespace FoslsContact
                                           const Tensor<1, dim> &    force) const
   {
     // (the contact table is gathered on the first process)
-    const auto rows = post.contact_rows(solution);
+    const auto rows = ContactTable<dim>(*discretization).rows(solution);
     Point<dim> contact_point;
     for (unsigned int d = 0; d < dim; ++d)
       contact_point[d] = parameters.hertz.contact_point[d] / scene.scaling().length;

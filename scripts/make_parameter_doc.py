@@ -10,8 +10,10 @@ subsections; each entry has "value", "default_value", "documentation",
 subsection with every parameter, its default, its valid values (from the
 pattern description) and its documentation.
 
-Sections and parameters are listed in the order in which
-source/parameters.cc declares them (anything not found there follows in
+Sections and parameters are listed in the order in which the sources
+declare them: AllParameters::declare_parameters (source/parameters.cc)
+calls the subsections' declare_parameters, each in its own
+source/parameters/<subsection>.cc (anything not found there follows in
 alphabetical order). With --check, nothing is written and the exit code is 1
 if the file is out of date.
 """
@@ -26,13 +28,22 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 
 
-def declaration_order(source):
+def declaration_sources(aggregate):
+    """The sources that declare the parameters, in the order in which
+    AllParameters::declare_parameters in @p aggregate calls them: the
+    struct Geometry in parameters/geometry.cc, and so on."""
+    if not aggregate.is_file():
+        return []
+    calls = re.findall(r'\b(\w+)::declare_parameters\(prm\)', aggregate.read_text())
+    snake = [re.sub(r'(?<!^)([A-Z])', r'_\1', name).lower() for name in calls]
+    return [aggregate.parent / "parameters" / f"{name}.cc" for name in snake]
+
+
+def declaration_order(sources):
     """Map section path (tuple) -> list of entry names, and the section
-    order, as declared in the C++ source. Empty if the source is missing."""
+    order, as declared in the C++ sources. Empty if they are missing."""
     sections, entries = [], {}
-    if not source.is_file():
-        return sections, entries
-    text = source.read_text()
+    text = "".join(s.read_text() for s in sources if s.is_file())
     stack = []
     token = re.compile(r'enter_subsection\(\s*"([^"]*)"\s*\)'
                        r'|(leave_subsection)\(\s*\)'
@@ -141,8 +152,8 @@ def collect(tree, path=()):
         yield from collect(sub, path + (name,))
 
 
-def render(tree, source):
-    section_order, entry_order = declaration_order(source)
+def render(tree, sources):
+    section_order, entry_order = declaration_order(sources)
     sections = dict(collect(tree))
     rank = {s: i for i, s in enumerate(section_order)}
     paths = sorted(sections, key=lambda p: (rank.get(p, len(rank)), p))
@@ -224,7 +235,7 @@ def main():
         sys.exit(f"make_parameter_doc.py: output of --print-parameters is "
                  f"not JSON ({e})")
 
-    text = render(tree, ROOT / "source" / "parameters.cc")
+    text = render(tree, declaration_sources(ROOT / "source" / "parameters.cc"))
     output = Path(args.output)
     if args.check:
         current = output.read_text() if output.is_file() else None

@@ -11,6 +11,7 @@
 #include <fosls_contact/output/output_directory.h>
 #include <fosls_contact/output/postprocessor.h>
 #include <fosls_contact/parameters.h>
+#include <fosls_contact/problem/run_summary.h>
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/scene/scene.h>
 #include <fosls_contact/solvers/qp_solver.h>
@@ -49,55 +50,14 @@ namespace FoslsContact
   private:
     void setup();
     void assemble();
-    /** Refuse data (Dirichlet values, traction, gap, body force) that are not finite. */
-    void check_data();
-    /**
-     * Refuse boundary conditions that leave a rigid motion free: the
-     * functional is then only semidefinite, the coarsest level singular
-     * and the iterates drift along the motion.
-     */
-    void check_rigid_motions();
-    void check_definiteness();
+    /** The checks of the assembled problem (ProblemChecks). */
+    void check_problem();
     void make_initial_guess();
     void setup_solver();
     void solve();
     void output_results(OutputDirectory &output);
-
-    /** summary.json's entries by name, each JSON text (Postprocessor::write()). */
-    using Summary = std::map<std::string, std::string>;
-    /**
-     * What the run cost: times, peak memory, communication (collective,
-     * first in output_results() so that the peak memory is the solve's).
-     */
-    Summary cost_summary() const;
-    /** The problem's size and how the solver did (iterations, rates, statistics). */
-    void add_solver_summary(Summary &summary) const;
-    /**
-     * The solution's figures in the scene's units: J and its parts, the
-     * contact force, the error indicators, the largest displacement and
-     * stress; returns J.
-     */
-    FunctionalValue add_solution_summary(Summary &                   summary,
-                                         const Postprocessor<dim> &  post,
-                                         const LevelVector &         cartesian,
-                                         const Tensor<1, dim> &      force,
-                                         const ErrorIndicators<dim> &indicators) const;
-    /** The comparison with Hertz's contact pressure, for a scene that declares one. */
-    void add_hertz_comparison(Summary &                 summary,
-                              const Postprocessor<dim> &post,
-                              const Tensor<1, dim> &    force) const;
-    /** The errors against the scene's exact solution; refuses non-finite ones. */
-    void add_errors(Summary &summary, const Postprocessor<dim> &post, const LevelVector &cartesian) const;
-
-    /**
-     * A solver for @p level_qp, the problem assembled on level @p level.
-     */
-    std::unique_ptr<QPSolver> make_solver(const ConstrainedQP &level_qp,
-                                          const unsigned int   level) const;
-    /** Solve the problem assembled on level @p level (for initial guesses). */
-    LevelVector solve_on_level(const unsigned int level, const LevelVector *start) const;
-    /** Interpolate a rotated level-l vector to level l+1 (rotated). */
-    LevelVector prolongate_rotated(const unsigned int to_level, const LevelVector &coarse) const;
+    /** Append the resident memory after @p phase. Collective. */
+    void record_memory(const std::string &phase);
 
     const Parameters::AllParameters parameters;
     const std::string               used_parameters;
@@ -112,16 +72,7 @@ namespace FoslsContact
     std::unique_ptr<QPSolver>            solver;
     std::unique_ptr<Monitor>             monitor;
     double                               time_setup = 0, time_solve = 0;
-    /** Resident memory (MB, all processes) after a phase of run(). */
-    struct PhaseMemory
-    {
-      std::string phase;
-      double      rss_mb;
-      double      peak_rss_mb;
-    };
-    std::vector<PhaseMemory> phase_memory;
-    /** Append the resident memory after @p phase. Collective. */
-    void record_memory(const std::string &phase);
+    std::vector<PhaseMemory>             phase_memory;
     /** What this process sent point to point during the solve. */
     CommunicationCounter                 solve_communication;
   };

@@ -1,19 +1,16 @@
 #include <deal.II/base/utilities.h>
 
 #include <fosls_contact/input/parameter_reader.h>
+#include <fosls_contact/input/pattern_description.h>
+#include <fosls_contact/input/text_file.h>
 #include <fosls_contact/output/error_line.h>
 
+#include <boost/algorithm/string/case_conv.hpp>
 #include <boost/property_tree/json_parser.hpp>
-#include <boost/property_tree/xml_parser.hpp>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
+#include <functional>
 #include <sstream>
 
 namespace FoslsContact
@@ -22,88 +19,6 @@ namespace FoslsContact
   {
     using ptree = boost::property_tree::ptree;
 
-    /** Undo ParameterHandler's mangling of names (`_xx`: the byte 0xxx). */
-    std::string
-    demangle(const std::string &name)
-    {
-      std::string out;
-      for (std::size_t i = 0; i < name.size(); ++i)
-        if (name[i] == '_' && i + 2 < name.size() + 0 && std::isxdigit(name[i + 1]) &&
-            std::isxdigit(name[i + 2]))
-          {
-            out += static_cast<char>(std::stoi(name.substr(i + 1, 2), nullptr, 16));
-            i += 2;
-          }
-        else
-          out += name[i];
-      return out;
-    }
-
-    /** Every entry and section of a tree printed by ParameterHandler (XML). */
-    void
-    collect(const ptree &                       tree,
-            const std::string &                 prefix,
-            std::map<std::string, std::string> &entries,
-            std::set<std::string> &             sections)
-    {
-      for (const auto &[key, node] : tree)
-        {
-          const std::string path = prefix + demangle(key);
-          if (node.get_child_optional("value"))
-            entries[path] = node.get<std::string>("pattern_description", "");
-          else
-            {
-              sections.insert(path);
-              collect(node, path + "/", entries, sections);
-            }
-        }
-    }
-
-    std::string
-    lower(std::string text)
-    {
-      for (auto &c : text)
-        c = std::tolower(static_cast<unsigned char>(c));
-      return text;
-    }
-
-    /** Edit distance with transpositions (optimal string alignment), case-blind. */
-    std::size_t
-    distance(const std::string &a_text, const std::string &b_text)
-    {
-      const std::string a = lower(a_text), b = lower(b_text);
-      std::vector<std::vector<std::size_t>> d(a.size() + 1,
-                                              std::vector<std::size_t>(b.size() + 1));
-      for (std::size_t i = 0; i <= a.size(); ++i)
-        d[i][0] = i;
-      for (std::size_t j = 0; j <= b.size(); ++j)
-        d[0][j] = j;
-      for (std::size_t i = 1; i <= a.size(); ++i)
-        for (std::size_t j = 1; j <= b.size(); ++j)
-          {
-            d[i][j] = std::min({d[i - 1][j] + 1,
-                                d[i][j - 1] + 1,
-                                d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-              d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-          }
-      return d[a.size()][b.size()];
-    }
-
-    std::string
-    parent(const std::string &path)
-    {
-      const auto slash = path.rfind('/');
-      return slash == std::string::npos ? "" : path.substr(0, slash);
-    }
-
-    std::string
-    last(const std::string &path)
-    {
-      const auto slash = path.rfind('/');
-      return slash == std::string::npos ? path : path.substr(slash + 1);
-    }
-
     std::string
     join(const std::vector<std::string> &sections, const std::string &name)
     {
@@ -111,70 +26,6 @@ namespace FoslsContact
       for (const auto &s : sections)
         path += s + "/";
       return path + name;
-    }
-
-    /** A bound of a pattern's description in words ("2147483647" is none). */
-    bool
-    is_limit(const std::string &bound)
-    {
-      return bound == "2147483647" || bound == "-2147483648" || bound == "MAX_DOUBLE" ||
-             bound == "-MAX_DOUBLE" || bound == "4294967295";
-    }
-
-    /**
-     * What a pattern accepts, in words, from its description
-     * ("[Selection V|W|F ]" -> "valid values: 'V', 'W', 'F'").
-     */
-    std::string
-    valid_values(const std::string &description)
-    {
-      const auto range = [](const std::string &text, const std::string &kind) {
-        const auto dots = text.find("...");
-        if (dots == std::string::npos)
-          return kind;
-        const std::string low  = text.substr(text.rfind(' ', dots) + 1,
-                                            dots - text.rfind(' ', dots) - 1);
-        const std::string high = text.substr(dots + 3, text.find(' ', dots) - dots - 3);
-        if (is_limit(low) && is_limit(high))
-          return kind;
-        if (is_limit(high))
-          return kind + " >= " + low;
-        if (is_limit(low))
-          return kind + " <= " + high;
-        return kind + " from " + low + " to " + high;
-      };
-      if (description.rfind("[Selection ", 0) == 0)
-        {
-          std::string text = description.substr(11, description.size() - 11 - 2);
-          std::string list;
-          for (const auto &choice : Utilities::split_string_list(text, '|'))
-            list += (list.empty() ? "'" : ", '") + choice + "'";
-          return "valid values: " + list;
-        }
-      if (description == "[Bool]")
-        return "valid values: 'true', 'false'";
-      if (description.rfind("[Integer", 0) == 0)
-        return "expected " + range(description, "an integer");
-      if (description.rfind("[Double", 0) == 0)
-        return "expected " + range(description, "a number");
-      if (description.rfind("[List of <", 0) == 0)
-        {
-          const auto close = description.find(">]");
-          const auto open  = description.find(" of length ", close);
-          std::string what = "a comma separated list of entries, each " +
-                             valid_values(description.substr(10, close - 8));
-          if (open != std::string::npos)
-            {
-              const std::string length = description.substr(open + 11);
-              const auto        dots   = length.find("...");
-              const std::string low    = length.substr(0, dots);
-              const std::string high   = length.substr(dots + 3, length.find(' ') - dots - 3);
-              what += is_limit(high) ? (low == "0" ? "" : ", at least " + low + " of them") :
-                                       ", " + low + " to " + high + " of them";
-            }
-          return what;
-        }
-      return "expected " + description;
     }
 
     bool
@@ -186,19 +37,12 @@ namespace FoslsContact
       return text.rfind(lower_case, 0) == 0 || text.rfind(upper, 0) == 0;
     }
 
-    /** Whether the pattern described by @p pattern is a Patterns::FileName. */
-    bool
-    is_file_name(const std::string &pattern)
-    {
-      return pattern.rfind("[FileName", 0) == 0;
-    }
-
     /** The extension of @p file in lower case, without the dot. */
     std::string
     extension(const std::string &file)
     {
       const std::string e = std::filesystem::path(file).extension().string();
-      return lower(e.empty() ? e : e.substr(1));
+      return boost::algorithm::to_lower_copy(e.empty() ? e : e.substr(1));
     }
 
     /** The most includes one scene may make (a DAG of includes can grow exponentially). */
@@ -208,88 +52,14 @@ namespace FoslsContact
 
   ParameterReader::ParameterReader(ParameterHandler &prm)
     : prm(prm)
-  {
-    std::stringstream xml;
-    prm.print_parameters(xml, ParameterHandler::XML);
-    ptree tree;
-    boost::property_tree::read_xml(xml, tree);
-    collect(tree.get_child("ParameterHandler"), "", entries, sections);
-  }
-
-
-  std::string
-  ParameterReader::read_text(const std::string &file,
-                             const std::string &what,
-                             const std::string &where)
-  {
-    const std::string name = what + " '" + ErrorLine::quote(file) + "'";
-    struct stat       status;
-    if (::stat(file.c_str(), &status) != 0)
-      {
-        const int   error = errno;
-        struct stat link;
-        if (error == ENOENT && ::lstat(file.c_str(), &link) == 0)
-          throw InputError(where, name + " is a symbolic link to a file that does not exist");
-        throw InputError(where,
-                    name + (error == ENOENT  ? " does not exist" :
-                            error == ENOTDIR ? " does not exist: a component of its path "
-                                               "is not a directory" :
-                            error == EACCES  ? " cannot be reached: permission denied on a "
-                                               "directory of its path" :
-                                               std::string(" cannot be read: ") +
-                                                 std::strerror(error)));
-      }
-    const auto kind = [](const mode_t mode) {
-      return S_ISDIR(mode)  ? "a directory" :
-             S_ISFIFO(mode) ? "a FIFO (named pipe), not a regular file" :
-             S_ISSOCK(mode) ? "a socket, not a regular file" :
-             S_ISCHR(mode)  ? "a character device, not a regular file" :
-             S_ISBLK(mode)  ? "a block device, not a regular file" :
-                              "not a regular file";
-    };
-    if (!S_ISREG(status.st_mode))
-      throw InputError(where, name + " is " + kind(status.st_mode));
-    // (O_NONBLOCK: if the file was replaced by a FIFO since, open() does
-    // not wait for a writer; fstat() below finds it)
-    const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-    if (fd < 0)
-      {
-        const int error = errno;
-        throw InputError(where,
-                    name + " cannot be read: " +
-                      (error == EACCES ? std::string("permission denied") :
-                                         std::string(std::strerror(error))));
-      }
-    std::string text;
-    if (::fstat(fd, &status) != 0 || !S_ISREG(status.st_mode))
-      {
-        ::close(fd);
-        throw InputError(where, name + " is " + kind(status.st_mode));
-      }
-    char buffer[65536];
-    for (;;)
-      {
-        const ssize_t n = ::read(fd, buffer, sizeof(buffer));
-        if (n > 0)
-          text.append(buffer, n);
-        else if (n == 0)
-          break;
-        else if (errno != EINTR)
-          {
-            const int error = errno;
-            ::close(fd);
-            throw InputError(where, name + " cannot be read: " + std::strerror(error));
-          }
-      }
-    ::close(fd);
-    return text;
-  }
+    , declared(prm)
+  {}
 
 
   void
   ParameterReader::read_file(const std::string &file)
   {
-    const std::string text = read_text(file, "parameter file", "command line");
+    const std::string text = TextFile::read(file, "parameter file", "command line");
     const std::string type = extension(file);
     if (type == "json")
       read_json(file, text);
@@ -305,8 +75,8 @@ namespace FoslsContact
             throw InputError(file, ErrorLine::text(e));
           }
         // file names relative to the scene file, as from a .prm file
-        for (const auto &[full, pattern] : entries)
-          if (is_file_name(pattern))
+        for (const auto &[full, pattern] : declared.parameters())
+          if (PatternDescription::is_file_name(pattern))
             {
               auto path = Utilities::split_string_list(full, '/');
               const std::string name = path.back();
@@ -442,7 +212,7 @@ namespace FoslsContact
       throw InputError(where,
                   "more than " + std::to_string(max_includes) +
                     " includes in one scene (does a file include another several times?)");
-    const std::string text = read_text(path.string(), "included file", where);
+    const std::string text = TextFile::read(path.string(), "included file", where);
     read_prm(path.string(), error ? path.string() : canonical, text);
   }
 
@@ -471,10 +241,10 @@ namespace FoslsContact
             std::string name = key;
             const bool  parameter =
               child.empty() || static_cast<bool>(child.get_child_optional("value"));
-            const bool known = parameter ? entries.count(join(path, name)) > 0 :
-                                           sections.count(join(path, name)) > 0;
-            if (!known && demangle(name) != name)
-              name = demangle(name);
+            const bool known = parameter ? declared.pattern(join(path, name)) != nullptr :
+                                           declared.is_section(join(path, name));
+            if (!known && DeclaredParameters::demangle(name) != name)
+              name = DeclaredParameters::demangle(name);
             const std::string where = file + " (" + ErrorLine::quote(join(path, name)) + ")";
             if (parameter)
               {
@@ -523,10 +293,10 @@ namespace FoslsContact
   void
   ParameterReader::check_section(const std::string &path, const std::string &where) const
   {
-    if (sections.count(path) == 0)
+    if (!declared.is_section(path))
       throw InputError(where,
                   "there is no section '" + ErrorLine::quote(path) + "'" +
-                    suggestion(path, true));
+                    declared.suggestion(path, true));
   }
 
 
@@ -538,16 +308,16 @@ namespace FoslsContact
                              const std::string &             from)
   {
     const std::string full = join(path, name);
-    const auto        entry = entries.find(full);
-    if (entry == entries.end())
+    const std::string *pattern = declared.pattern(full);
+    if (!pattern)
       throw InputError(where,
                   "there is no parameter '" + ErrorLine::quote(full) + "'" +
-                    suggestion(full, false));
+                    declared.suggestion(full, false));
     // A file name (Geometry/Mesh file) is relative to the file that sets
     // it, like an include, and is kept absolute: used_parameters.prm and
     // --print-parameters then name the same file from any directory.
     std::string value = text;
-    if (is_file_name(entry->second) && !value.empty())
+    if (PatternDescription::is_file_name(*pattern) && !value.empty())
       {
         namespace fs = std::filesystem;
         fs::path path(value);
@@ -581,54 +351,8 @@ namespace FoslsContact
     if (!valid)
       throw InputError(where,
                   "invalid value '" + ErrorLine::quote(value) + "' for parameter '" + full +
-                    "'; " + valid_values(entry->second));
+                    "'; " + PatternDescription::valid_values(*pattern));
   }
 
 
-  std::string
-  ParameterReader::suggestion(const std::string &path, const bool section) const
-  {
-    // the closest name in the same section; else a parameter (section)
-    // of that name elsewhere, or the closest path
-    const std::string name  = last(path);
-    const std::size_t limit = std::max<std::size_t>(1, std::min<std::size_t>(3, name.size() / 3));
-    std::string       best;
-    std::size_t       best_distance = limit + 1;
-    auto              consider      = [&](const std::string &candidate) {
-      if (parent(candidate) == parent(path))
-        {
-          const std::size_t d = distance(last(candidate), name);
-          if (d < best_distance)
-            best = candidate, best_distance = d;
-        }
-    };
-    if (section)
-      for (const auto &s : sections)
-        consider(s);
-    else
-      for (const auto &[e, pattern] : entries)
-        consider(e);
-    if (best.empty())
-      {
-        const auto candidates = [&]() {
-          std::vector<std::string> all;
-          if (section)
-            all.assign(sections.begin(), sections.end());
-          else
-            for (const auto &[e, pattern] : entries)
-              all.push_back(e);
-          return all;
-        }();
-        for (const auto &c : candidates)
-          if (lower(last(c)) == lower(name))
-            return "; did you mean '" + c + "'?";
-        for (const auto &c : candidates)
-          {
-            const std::size_t d = distance(c, path);
-            if (d < best_distance)
-              best = c, best_distance = d;
-          }
-      }
-    return best.empty() ? "" : "; did you mean '" + best + "'?";
-  }
 } // namespace FoslsContact

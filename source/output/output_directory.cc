@@ -1,6 +1,8 @@
 #include <deal.II/base/mpi.h>
 
+#include <fosls_contact/output/directory_swap.h>
 #include <fosls_contact/output/error_line.h>
+#include <fosls_contact/output/file_system.h>
 #include <fosls_contact/output/output_directory.h>
 
 #include <fcntl.h>
@@ -24,30 +26,6 @@ namespace FoslsContact
 
   namespace
   {
-    std::string
-    quoted(const fs::path &path)
-    {
-      return "'" + ErrorLine::quote(path.string()) + "'";
-    }
-
-    std::string
-    system_error(const int error)
-    {
-      return std::strerror(error);
-    }
-
-    /** fsync @p path (a file or a directory); errno's text, or "". */
-    std::string
-    sync(const fs::path &path)
-    {
-      const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-      if (fd < 0)
-        return system_error(errno);
-      const int result = ::fsync(fd);
-      const int error  = errno;
-      ::close(fd);
-      return result == 0 ? "" : system_error(error);
-    }
 
     /** The file names listed in the manifest of @p directory. */
     std::set<std::string>
@@ -71,39 +49,6 @@ namespace FoslsContact
       return name == "contact.csv" || name == "convergence.csv" || name == "summary.json" ||
              name == "used_parameters.prm" || name == "solution_0000.pvtu" ||
              name == OutputDirectory::manifest_name || std::regex_match(name, piece);
-    }
-
-    /** lstat: whether @p path exists, and its mode. */
-    bool
-    present(const fs::path &path, mode_t *mode = nullptr)
-    {
-      struct stat status;
-      if (::lstat(path.c_str(), &status) != 0)
-        return false;
-      if (mode)
-        *mode = status.st_mode;
-      return true;
-    }
-
-    /** Whether @p a and @p b are the same file (inode). */
-    bool
-    same_file(const fs::path &a, const fs::path &b)
-    {
-      struct stat sa, sb;
-      return ::lstat(a.c_str(), &sa) == 0 && ::lstat(b.c_str(), &sb) == 0 &&
-             sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
-    }
-
-    /** The names in @p directory (none if it cannot be read). */
-    std::vector<std::string>
-    list(const fs::path &directory)
-    {
-      std::vector<std::string> names;
-      std::error_code          error;
-      for (fs::directory_iterator it(directory, error), end; !error && it != end;
-           it.increment(error))
-        names.push_back(it->path().filename().string());
-      return names;
     }
   } // namespace
 
@@ -150,7 +95,7 @@ namespace FoslsContact
     if (directory == directory.root_path())
       fail("the root directory cannot be an output directory");
     mode_t mode = 0;
-    if (present(directory, &mode) && S_ISLNK(mode))
+    if (FileSystem::present(directory, &mode) && S_ISLNK(mode))
       {
         // the files go where the link points
         std::error_code error;
@@ -179,11 +124,11 @@ namespace FoslsContact
         if (::stat(p.c_str(), &status) == 0)
           {
             if (!S_ISDIR(status.st_mode))
-              fail(quoted(p) + " is not a directory");
+              fail(FileSystem::quoted(p) + " is not a directory");
             break;
           }
         if (errno != ENOENT)
-          fail("cannot reach " + quoted(p) + ": " + system_error(errno));
+          fail("cannot reach " + FileSystem::quoted(p) + ": " + FileSystem::system_error(errno));
         missing.push_back(p);
         if (p == p.parent_path())
           break;
@@ -191,21 +136,21 @@ namespace FoslsContact
     for (auto p = missing.rbegin(); p != missing.rend(); ++p)
       {
         if (::mkdir(p->c_str(), 0777) != 0)
-          fail("cannot make the directory " + quoted(*p) + ": " + system_error(errno));
+          fail("cannot make the directory " + FileSystem::quoted(*p) + ": " + FileSystem::system_error(errno));
         made.push_back(*p);
       }
-    if (present(directory, &mode))
+    if (FileSystem::present(directory, &mode))
       {
         struct stat status;
         if (::stat(directory.c_str(), &status) != 0 || !S_ISDIR(status.st_mode))
           fail("exists and is not a directory");
         if (::access(directory.c_str(), R_OK | W_OK | X_OK) != 0)
-          fail("cannot be read and written: " + system_error(errno));
+          fail("cannot be read and written: " + FileSystem::system_error(errno));
         // the run replaces the directory: only one it wrote (its list is
         // there), or one that holds nothing but output files (an earlier
         // version's), never someone's other directory (/tmp, a home)
-        if (!present(directory / manifest_name))
-          for (const auto &entry : list(directory))
+        if (!FileSystem::present(directory / manifest_name))
+          for (const auto &entry : FileSystem::list(directory))
             if (!is_output_name(entry) && entry.rfind(".staging-", 0) != 0)
               fail("exists and holds '" + ErrorLine::quote(entry) +
                    "', which fosls-contact did not write (the directory has no " +
@@ -221,7 +166,7 @@ namespace FoslsContact
       {
         lock_fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
         if (lock_fd < 0)
-          fail("cannot create the lock file " + quoted(lock_path) + ": " + system_error(errno));
+          fail("cannot create the lock file " + FileSystem::quoted(lock_path) + ": " + FileSystem::system_error(errno));
         if (::flock(lock_fd, LOCK_EX | LOCK_NB) != 0)
           {
             const int error = errno;
@@ -229,8 +174,8 @@ namespace FoslsContact
             lock_fd = -1;
             if (error == EWOULDBLOCK)
               fail("another run of fosls-contact writes into it (lock file " +
-                   quoted(lock_path) + "); wait for it or choose another directory");
-            fail("cannot lock " + quoted(lock_path) + ": " + system_error(error));
+                   FileSystem::quoted(lock_path) + "); wait for it or choose another directory");
+            fail("cannot lock " + FileSystem::quoted(lock_path) + ": " + FileSystem::system_error(error));
           }
         struct stat held, named;
         if (::fstat(lock_fd, &held) == 0 && ::lstat(lock_path.c_str(), &named) == 0 &&
@@ -242,13 +187,13 @@ namespace FoslsContact
 
     // staging directories of runs that were killed
     const std::string stale_prefix = "." + name + ".staging-";
-    for (const auto &entry : list(parent))
+    for (const auto &entry : FileSystem::list(parent))
       if (entry.rfind(stale_prefix, 0) == 0)
         clean_stale(parent / entry);
 
     staging = parent / (stale_prefix + std::to_string(::getpid()));
     if (::mkdir(staging.c_str(), 0777) != 0)
-      fail("cannot make the staging directory " + quoted(staging) + ": " + system_error(errno));
+      fail("cannot make the staging directory " + FileSystem::quoted(staging) + ": " + FileSystem::system_error(errno));
   }
 
 
@@ -258,12 +203,12 @@ namespace FoslsContact
     // only what the program wrote: the files it lists or names, and the
     // hard links of files carried over (the same file is in the directory)
     const auto listed = read_manifest(stale);
-    for (const auto &name : list(stale))
+    for (const auto &name : FileSystem::list(stale))
       {
         mode_t mode = 0;
-        if (!present(stale / name, &mode) || S_ISDIR(mode))
+        if (!FileSystem::present(stale / name, &mode) || S_ISDIR(mode))
           continue;
-        if (listed.count(name) || is_output_name(name) || same_file(stale / name, directory / name))
+        if (listed.count(name) || is_output_name(name) || FileSystem::same_file(stale / name, directory / name))
           ::unlink((stale / name).c_str());
       }
     ::rmdir(stale.c_str());
@@ -276,12 +221,12 @@ namespace FoslsContact
   {
     const fs::path path = staging / name;
     const auto     fail = [&](const std::string &what) {
-      throw std::runtime_error(parameter() + ": cannot write " + quoted(path) + ": " + what);
+      throw std::runtime_error(parameter() + ": cannot write " + FileSystem::quoted(path) + ": " + what);
     };
     {
       std::ofstream out(path, std::ios::binary | std::ios::trunc);
       if (!out)
-        fail(system_error(errno));
+        fail(FileSystem::system_error(errno));
       errno = 0;
       try
         {
@@ -291,16 +236,16 @@ namespace FoslsContact
         {
           // (deal.II's writers throw on a failed stream: the cause is errno's)
           const int error = errno;
-          fail(error ? system_error(error) : ErrorLine::text(e));
+          fail(error ? FileSystem::system_error(error) : ErrorLine::text(e));
         }
       out.flush();
       if (!out)
-        fail(errno ? system_error(errno) : "write error");
+        fail(errno ? FileSystem::system_error(errno) : "write error");
       out.close();
       if (out.fail())
-        fail(errno ? system_error(errno) : "write error");
+        fail(errno ? FileSystem::system_error(errno) : "write error");
     }
-    const std::string error = sync(path);
+    const std::string error = FileSystem::sync(path);
     if (!error.empty())
       fail(error);
     written.push_back(name);
@@ -338,90 +283,16 @@ namespace FoslsContact
   void
   OutputDirectory::publish_here(const std::set<std::string> &names)
   {
-    const auto fail = [&](const std::string &what) {
-      throw std::runtime_error(parameter() + ": " + what);
-    };
     write(manifest_name, [&](std::ostream &out) {
       for (const auto &n : names)
         out << n << '\n';
     });
-    const fs::path parent     = directory.parent_path();
-    const bool     has_old    = present(directory);
-    const auto     old_listed = has_old ? read_manifest(directory) : std::set<std::string>();
-    // the user's files: hard links into the new directory now, directories
-    // (and what cannot be linked) moved after the swap
-    std::vector<std::string> to_move;
-    for (const auto &name : has_old ? list(directory) : std::vector<std::string>())
-      {
-        if (name == manifest_name || old_listed.count(name))
-          continue;
-        mode_t mode = 0;
-        present(directory / name, &mode);
-        if (names.count(name))
-          {
-            if (S_ISDIR(mode))
-              fail("cannot replace the directory " + quoted(directory / name) +
-                   " by the output file of that name");
-            continue;
-          }
-        if (S_ISDIR(mode) ||
-            ::linkat(AT_FDCWD, (directory / name).c_str(), AT_FDCWD, (staging / name).c_str(), 0) != 0)
-          to_move.push_back(name);
-      }
-    // the new directory keeps the old one's permissions
-    struct stat old_status;
-    if (has_old && ::stat(directory.c_str(), &old_status) == 0)
-      ::chmod(staging.c_str(), old_status.st_mode & 07777);
-    std::string error = sync(staging);
-    if (!error.empty())
-      fail("cannot sync " + quoted(staging) + ": " + error);
-
-    fs::path old;
-    if (!has_old)
-      {
-        if (::renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, directory.c_str(), RENAME_NOREPLACE) != 0 &&
-            ((errno != EINVAL && errno != ENOSYS && errno != EOPNOTSUPP) ||
-             ::rename(staging.c_str(), directory.c_str()) != 0))
-          fail("cannot rename " + quoted(staging) + " to it: " + system_error(errno));
-      }
-    else if (::renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, directory.c_str(), RENAME_EXCHANGE) == 0)
-      old = staging;
-    else if (errno == EINVAL || errno == ENOSYS || errno == EOPNOTSUPP)
-      {
-        // no atomic exchange on this filesystem: two renames
-        old = parent / ("." + directory.filename().string() + ".staging-" +
-                        std::to_string(::getpid()) + "-old");
-        if (::rename(directory.c_str(), old.c_str()) != 0)
-          fail("cannot move the old directory aside: " + system_error(errno));
-        if (::rename(staging.c_str(), directory.c_str()) != 0)
-          {
-            const int e = errno;
-            ::rename(old.c_str(), directory.c_str());
-            fail("cannot rename " + quoted(staging) + " to it: " + system_error(e));
-          }
-      }
-    else
-      fail("cannot exchange " + quoted(staging) + " with it: " + system_error(errno));
+    DirectorySwap::replace(directory,
+                           staging,
+                           names,
+                           FileSystem::present(directory) ? read_manifest(directory) : std::set<std::string>(),
+                           parameter());
     published = true;
-    sync(parent);
-
-    // the old directory: move the user's directories over, remove what a
-    // run wrote (its list, and the outputs replaced) and the links carried
-    if (old.empty())
-      return;
-    for (const auto &name : to_move)
-      ::rename((old / name).c_str(), (directory / name).c_str());
-    for (const auto &name : list(old))
-      {
-        mode_t mode = 0;
-        if (!present(old / name, &mode) || S_ISDIR(mode))
-          continue;
-        if (name == manifest_name || old_listed.count(name) || names.count(name) ||
-            same_file(old / name, directory / name))
-          ::unlink((old / name).c_str());
-      }
-    ::rmdir(old.c_str());
-    sync(parent);
   }
 
 

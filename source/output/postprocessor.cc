@@ -4,10 +4,10 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
-#include <fosls_contact/output/contact_surface.h>
+#include <fosls_contact/output/contact_table.h>
 #include <fosls_contact/output/postprocessor.h>
-#include <fosls_contact/output/stress_fields.h>
 #include <fosls_contact/output/stress_measures.h>
+#include <fosls_contact/output/vtu_output.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -17,22 +17,6 @@
 
 namespace FoslsContact
 {
-  namespace
-  {
-    /**
-     * Whether a contact vertex with normal displacement @p u_n is in
-     * contact with the obstacle at gap @p gap: the solvers leave an active
-     * DoF at its bound up to round-off, relative to the gap and to 1 (a
-     * gap of 0).
-     */
-    bool
-    in_contact(const double u_n, const double gap)
-    {
-      constexpr double round_off = 1e-12;
-      return u_n >= gap - round_off * std::max(1., std::abs(gap));
-    }
-  } // namespace
-
 
   template <int dim>
   Postprocessor<dim>::Postprocessor(const Discretization<dim> &       discretization,
@@ -222,87 +206,6 @@ namespace FoslsContact
 
 
   template <int dim>
-  std::vector<typename ContactRow<dim>::Values>
-  Postprocessor<dim>::contact_rows(const LevelVector &x) const
-  {
-    using Row         = ContactRow<dim>;
-    const auto &level = discretization.level(discretization.finest_level());
-    update_ghosts(x);
-    // the displacement in Cartesian coordinates, at the vertices
-    LevelVector cartesian = x;
-    discretization.rotate_to_cartesian(discretization.finest_level(), cartesian);
-    // sigma_nn at a vertex: mean over the contact faces that contain it
-    // (all of them are here for an owned vertex)
-    std::map<unsigned int, std::pair<double, unsigned int>> face_mean;
-    for (const auto &cell : discretization.get_dof_handler()
-                              .mg_cell_iterators_on_level(discretization.finest_level()))
-      if (Discretization<dim>::is_present(cell))
-        for (const unsigned int f : cell->face_indices())
-          if (cell->at_boundary(f) &&
-              discretization.get_scene().is_contact(cell->face(f)->boundary_id()))
-            {
-              const auto   face = cell->face(f);
-              const double s = x.local_element(level.face_dofs.at(face->index())[0]);
-              for (const unsigned int v : face->vertex_indices())
-                {
-                  auto &entry = face_mean[face->vertex_index(v)];
-                  entry.first += s;
-                  entry.second += 1;
-                }
-            }
-    std::vector<typename Row::Values> rows;
-    for (const auto &cv : level.contact_vertices)
-      if (cv.owned)
-        {
-          const double un = x.local_element(cv.normal_dof);
-          const auto   it = face_mean.find(cv.vertex_index);
-          const double snn =
-            it == face_mean.end() ? 0. : it->second.first / it->second.second;
-          const auto &          dofs = level.vertex_dofs.at(cv.vertex_index);
-          typename Row::Values row;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              row[Row::x + d] = scaling.length * cv.point[d];
-              row[Row::u + d] = scaling.length * cartesian.local_element(dofs[d]);
-            }
-          row[Row::u_n]      = scaling.length * un;
-          row[Row::gap]      = scaling.length * cv.gap;
-          row[Row::sigma_nn] = scaling.stress * snn;
-          row[Row::active]   = in_contact(un, cv.gap) ? 1 : 0;
-          rows.push_back(row);
-        }
-    const auto all = Utilities::MPI::gather(discretization.get_communicator(), rows, 0);
-    rows.clear();
-    for (const auto &part : all)
-      rows.insert(rows.end(), part.begin(), part.end());
-    std::sort(rows.begin(), rows.end(), [](const auto &a, const auto &b) {
-      return std::lexicographical_compare(a.begin(), a.begin() + dim, b.begin(), b.begin() + dim);
-    });
-    return rows;
-  }
-
-
-  template <int dim>
-  std::string
-  Postprocessor<dim>::contact_table(const LevelVector &x) const
-  {
-    const auto         rows = contact_rows(x);
-    std::ostringstream out;
-    if (Utilities::MPI::this_mpi_process(discretization.get_communicator()) != 0)
-      return out.str();
-    out << (dim == 2 ? "x,y,u_x,u_y" : "x,y,z,u_x,u_y,u_z") << ",u_n,gap,sigma_nn,active\n";
-    out << std::setprecision(10);
-    for (const auto &row : rows)
-      {
-        for (unsigned int d = 0; d < ContactRow<dim>::active; ++d)
-          out << row[d] << ',';
-        out << int(row[ContactRow<dim>::active]) << '\n';
-      }
-    return out.str();
-  }
-
-
-  template <int dim>
   void
   Postprocessor<dim>::write(const LevelVector &                        x,
                             const Monitor &                            monitor,
@@ -313,7 +216,7 @@ namespace FoslsContact
   {
     const MPI_Comm     comm  = discretization.get_communicator();
     const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
-    const std::string  table = contact_table(x); // (collective)
+    const std::string  table = ContactTable<dim>(discretization).csv(x); // (collective)
     // every process writes its files into the staging directory; a
     // failure (a full disk) is collected, so that every process reaches
     // publish(), which then publishes nothing and stops all of them
@@ -321,7 +224,8 @@ namespace FoslsContact
     try
       {
         if (parameters.output.write_vtu)
-          write_vtu(x, indicators, output);
+          VtuOutput<dim>(discretization, parameters.material, mapping)
+            .write(x, solution_in_scene_units(x), indicators, output);
         if (rank == 0)
           {
             output.write("contact.csv", [&](std::ostream &out) { out << table; });
@@ -345,162 +249,6 @@ namespace FoslsContact
         error = e.what();
       }
     output.publish(error);
-  }
-
-
-  namespace
-  {
-    /**
-     * Name the active fields of a VTU piece or record: VTK's filters (warp
-     * by vector, glyphs) use the active vector, which deal.II leaves unset
-     * (its header says Scalars="scalars", a field that does not exist).
-     */
-    std::string
-    with_active_fields(std::string text, const std::string &active)
-    {
-      for (const std::string tag : {"<PPointData Scalars=\"scalars\">",
-                                    "<PointData Scalars=\"scalars\">"})
-        {
-          const auto at = text.find(tag);
-          if (at != std::string::npos)
-            {
-              const std::string element = tag.substr(0, tag.find(' '));
-              text.replace(at, tag.size(), element + " " + active + ">");
-              break;
-            }
-        }
-      return text;
-    }
-  } // namespace
-
-
-  template <int dim>
-  void
-  Postprocessor<dim>::write_vtu(const LevelVector &           x,
-                                const ErrorIndicators<dim> &indicators,
-                                OutputDirectory &             output) const
-  {
-    const MPI_Comm    comm     = discretization.get_communicator();
-    const auto &      scene    = discretization.get_scene();
-    const LevelVector solution = solution_in_scene_units(x);
-    DataOut<dim>      data_out;
-    data_out.attach_dof_handler(discretization.get_dof_handler());
-    // u, and sigma as computed (not exactly symmetric: paper section 2)
-    std::vector<std::string> names(dim, "u");
-    names.resize(dim + dim * dim, "sigma");
-    std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
-      dim, DataComponentInterpretation::component_is_part_of_vector);
-    interpretation.resize(dim + dim * dim, DataComponentInterpretation::component_is_part_of_tensor);
-    data_out.add_data_vector(solution, names, DataOut<dim>::type_dof_data, interpretation);
-    StressFields<dim> stress(scene, parameters.material);
-    data_out.add_data_vector(solution, stress);
-
-    // cell data: the error indicator eta_T (ErrorIndicators, in the
-    // scene's units: the eta_T^2 sum to J) and the contact status
-    const auto &  tria = discretization.get_triangulation();
-    Vector<float> eta(tria.n_active_cells()), status(tria.n_active_cells());
-    const double  unit = scaling.functional(dim);
-    for (const auto &cell : tria.active_cell_iterators())
-      if (cell->is_locally_owned())
-        eta[cell->active_cell_index()] =
-          std::sqrt(std::max(0., unit * indicators.squared(cell->active_cell_index())));
-    {
-      const auto &                 level = discretization.level(discretization.finest_level());
-      std::map<unsigned int, bool> active_vertex;
-      // (x's ghost values: from contact_table() before)
-      for (const auto &cv : level.contact_vertices)
-        active_vertex[cv.vertex_index] = in_contact(x.local_element(cv.normal_dof), cv.gap);
-      for (const auto &cell : tria.active_cell_iterators())
-        if (cell->is_locally_owned())
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              const auto it = active_vertex.find(cell->vertex_index(v));
-              if (it != active_vertex.end())
-                status[cell->active_cell_index()] =
-                  std::max<float>(status[cell->active_cell_index()], it->second ? 2.f : 1.f);
-            }
-    }
-    data_out.add_data_vector(eta, "error_indicator", DataOut<dim>::type_cell_data);
-    data_out.add_data_vector(status, "contact_status", DataOut<dim>::type_cell_data);
-
-    // a curved boundary (a manifold other than the flat one) is drawn
-    // with a quadratic mapping of each cell, subdivided once: the
-    // solution is that of the linear mapping, shown on the curved shape
-    const auto manifolds = tria.get_manifold_ids();
-    const bool curved    = std::any_of(manifolds.begin(), manifolds.end(), [](const auto id) {
-      return id != numbers::flat_manifold_id;
-    });
-    const PhysicalMapping<dim> drawing(curved ? 2 : 1, scaling.length);
-    data_out.build_patches(drawing, curved ? 2 : 0, DataOut<dim>::curved_boundary);
-    // zlib's default level spent more time than the solve on large
-    // meshes (13% of a level-8 run); best_speed files are ~10% larger
-    DataOutBase::VtkFlags flags(0. /* time */, 0 /* cycle */);
-    flags.compression_level = DataOutBase::VtkFlags::best_speed;
-    data_out.set_flags(flags);
-    write_pieces(data_out,
-                 "solution_0000",
-                 "Scalars=\"von_mises\" Vectors=\"u\" Tensors=\"stress\"",
-                 output);
-    // the series ParaView opens in one go: the body and, as a second part
-    // of the same step, the contact surface (a multiblock data set)
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      output.write("solution.pvd", [&](std::ostream &out) {
-        out << "<?xml version=\"1.0\"?>\n"
-            << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-            << "  <Collection>\n"
-            << "    <DataSet timestep=\"0\" group=\"\" part=\"0\" name=\"body\" "
-               "file=\"solution_0000.pvtu\"/>\n";
-        if (scene.has_contact())
-          out << "    <DataSet timestep=\"0\" group=\"\" part=\"1\" name=\"contact surface\" "
-                 "file=\"contact_surface_0000.pvtu\"/>\n";
-        out << "  </Collection>\n</VTKFile>\n";
-      });
-
-    if (scene.has_contact())
-      {
-        ContactSurface<dim>                 surface(scene);
-        typename ContactSurface<dim>::Fields fields(scene);
-        surface.attach_dof_handler(discretization.get_dof_handler());
-        surface.add_data_vector(solution, fields);
-        // (with the mapping of the computation: the gap g - u.n is that of
-        // the solution's own geometry, 0 where the body touches)
-        surface.build_patches(mapping);
-        surface.set_flags(flags);
-        write_pieces(surface, "contact_surface_0000", "Scalars=\"contact_pressure\"", output);
-      }
-  }
-
-
-  template <int dim>
-  template <typename Writer>
-  void
-  Postprocessor<dim>::write_pieces(Writer &           writer,
-                                   const std::string &name,
-                                   const std::string &active,
-                                   OutputDirectory &  output) const
-  {
-    // one piece per process, listed by the record the first process writes
-    const MPI_Comm     comm  = discretization.get_communicator();
-    const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
-    const auto         piece = [&](const unsigned int p) {
-      return name + "." + std::to_string(p) + ".vtu";
-    };
-    output.write(piece(rank), [&](std::ostream &out) {
-      std::ostringstream text;
-      writer.write_vtu(text);
-      out << with_active_fields(text.str(), active);
-    });
-    if (rank == 0)
-      {
-        std::vector<std::string> pieces;
-        for (unsigned int p = 0; p < Utilities::MPI::n_mpi_processes(comm); ++p)
-          pieces.push_back(piece(p));
-        output.write(name + ".pvtu", [&](std::ostream &out) {
-          std::ostringstream text;
-          writer.write_pvtu_record(text, pieces);
-          out << with_active_fields(text.str(), active);
-        });
-      }
   }
 
 

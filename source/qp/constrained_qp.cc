@@ -1,10 +1,7 @@
+#include <fosls_contact/qp/accurate_sums.h>
 #include <fosls_contact/qp/constrained_qp.h>
 
-#include <deal.II/base/parallel.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 
@@ -32,98 +29,6 @@ namespace FoslsContact
   }
 
 
-  namespace
-  {
-    /**
-     * Put @p matrix on @p sparsity, the pattern of its nonzero entries (and
-     * the diagonal). The pattern is built in place from exact row lengths
-     * and the kept values are staged in one array, so that the peak is the
-     * old matrix plus the new one: a DynamicSparsityPattern and a list of
-     * (column, value) pairs cost 2.5 times more at level 9 of the square.
-     */
-    void
-    compress(SparseMatrix<double> &matrix, SparsityPattern &sparsity)
-    {
-      Assert(&matrix.get_sparsity_pattern() != &sparsity, ExcInternalError());
-      const auto n    = matrix.m();
-      const auto kept = [](const auto &entry) {
-        return entry.value() != 0. || entry.column() == entry.row();
-      };
-      std::vector<unsigned int> row_lengths(n, 0);
-      for (types::global_dof_index i = 0; i < n; ++i)
-        row_lengths[i] = std::count_if(matrix.begin(i), matrix.end(i), kept);
-      sparsity.reinit(n, n, row_lengths);
-      for (types::global_dof_index i = 0; i < n; ++i)
-        for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
-          if (kept(*e))
-            sparsity.add(i, e->column());
-      sparsity.compress();
-
-      // Both patterns store a row as the diagonal and then the other
-      // columns in increasing order, so a new row is a subsequence of the
-      // old one.
-      std::vector<double> values;
-      values.reserve(sparsity.n_nonzero_elements());
-      for (types::global_dof_index i = 0; i < n; ++i)
-        {
-          auto e = matrix.begin(i);
-          for (auto s = sparsity.begin(i); s != sparsity.end(i); ++s)
-            {
-              while (e->column() != s->column())
-                ++e;
-              values.push_back(e->value());
-            }
-        }
-      // clear() first: SparseMatrix::reinit keeps an allocation that is
-      // large enough, which would be that of the full pattern
-      matrix.clear();
-      matrix.reinit(sparsity);
-      std::size_t k = 0;
-      for (types::global_dof_index i = 0; i < n; ++i)
-        for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
-          e->value() = values[k++];
-    }
-  } // namespace
-
-
-  LevelVector
-  diagonal(const SparseMatrix<double> &                                matrix,
-           const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner)
-  {
-    LevelVector d(partitioner);
-    for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
-      d.local_element(i) = matrix.diag_element(i);
-    update_ghosts(d);
-    return d;
-  }
-
-
-  void
-  zero_round_off(SparseMatrix<double> &                                     matrix,
-                 const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-                 const double                                               drop)
-  {
-    // The rule treats a_ij and a_ji alike, so a symmetric pattern stays
-    // symmetric unless one of them is within round-off of the threshold
-    // (measured on A: all entries are below 1e-15 or above 1e-8 of
-    // sqrt(a_ii a_jj); the patch colors do not rely on symmetry).
-    const LevelVector   d = diagonal(matrix, partitioner);
-    std::vector<double> root_diagonal(d.locally_owned_size() + partitioner->n_ghost_indices());
-    for (unsigned int i = 0; i < root_diagonal.size(); ++i)
-      root_diagonal[i] = std::sqrt(std::abs(d.local_element(i)));
-    for_subranges(
-      0u,
-      partitioner->locally_owned_size(),
-      [&](const unsigned int begin, const unsigned int end) {
-        for (auto i = begin; i < end; ++i)
-          for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
-            if (std::abs(e->value()) <= drop * root_diagonal[i] * root_diagonal[e->column()])
-              e->value() = 0.;
-      },
-      500);
-  }
-
-
   void
   ConstrainedQP::compress_matrices()
   {
@@ -132,127 +37,10 @@ namespace FoslsContact
     // the small parts first: the memory they free takes A's new pattern
     // (freed memory stays with the process, measured: the resident memory
     // does not drop when the full-pattern values are freed)
-    compress(matrix_eq, sparsity_eq);
-    compress(matrix_compl, sparsity_compl);
-    compress(matrix, sparsity);
+    compress_to_nonzeros(matrix_eq, sparsity_eq);
+    compress_to_nonzeros(matrix_compl, sparsity_compl);
+    compress_to_nonzeros(matrix, sparsity);
   }
-
-
-  namespace
-  {
-    /**
-     * A sum in twice the working precision (Ogita, Rump, Oishi: Sum2 and
-     * Dot2): the rounding errors of every addition (two_sum) and product
-     * (two_product, with a fused multiply-add) are collected in a second
-     * double.
-     */
-    struct CompensatedSum
-    {
-      double sum = 0, error = 0;
-
-      void
-      add(const double a)
-      {
-        const double s = sum + a;
-        const double b = s - sum;
-        error += (sum - (s - b)) + (a - b);
-        sum = s;
-      }
-      void
-      add_product(const double a, const double b)
-      {
-        const double p = a * b;
-        add(p);
-        error += std::fma(a, b, -p);
-      }
-      void
-      add(const CompensatedSum &other)
-      {
-        add(other.sum);
-        error += other.error;
-      }
-      double value() const { return sum + error; }
-    };
-
-
-    /**
-     * The rows of one block of sum_over_row_blocks(): fixed, so that the
-     * order of the sums does not depend on the threads; large enough that
-     * a block outweighs the start-up of its task.
-     */
-    constexpr types::global_dof_index rows_per_block = 512;
-
-    /**
-     * Partial sums add_row(partial, i) over fixed blocks of rows, computed
-     * in parallel; the caller adds them in order, so that the result does
-     * not depend on the number of threads.
-     */
-
-    template <typename T, typename Function>
-    std::vector<T>
-    sum_over_row_blocks(const unsigned int n, const Function &add_row)
-    {
-      constexpr types::global_dof_index block = rows_per_block;
-      std::vector<T>                partial((n + block - 1) / block, T());
-      for_subranges(
-        types::global_dof_index(0),
-        types::global_dof_index(partial.size()),
-        [&](const types::global_dof_index begin, const types::global_dof_index end) {
-          for (auto k = begin; k < end; ++k)
-            for (auto i = k * block; i < std::min(n, (k + 1) * block); ++i)
-              add_row(partial[k], i);
-        },
-        1);
-      return partial;
-    }
-
-
-    /**
-     * 1/2 x^T M x - b^T x + c, accurate to about the last digit of the
-     * result. At a converged iterate the terms of x^T M x are many orders
-     * of magnitude larger than the functional (the entries of M grow like
-     * C_eq / h^2, and x holds the Dirichlet values): in plain double
-     * precision the value carried an error of 1e-8 of J itself on the
-     * graded half disc, enough to show a spurious increase of J in
-     * convergence.csv. Rows are summed in fixed blocks (in parallel) and
-     * the block sums added in order, so the value does not depend on the
-     * number of threads.
-     */
-    double
-    accurate_quadratic(const SparseMatrix<double> &M,
-                       const LevelVector &         x,
-                       const LevelVector &         b,
-                       const double                c)
-    {
-      update_ghosts(x);
-      const auto partial = sum_over_row_blocks<CompensatedSum>(
-        x.locally_owned_size(), [&](CompensatedSum &sum, const unsigned int i) {
-          // (M x)_i in twice the precision, times x_i / 2
-          const double   xi = x.local_element(i);
-          CompensatedSum row;
-          for (auto e = M.begin(i); e != M.end(i); ++e)
-            row.add_product(e->value(), x.local_element(e->column()));
-          sum.add_product(0.5 * xi, row.sum);
-          sum.add(0.5 * xi * row.error);
-          sum.add_product(-b.local_element(i), xi);
-        });
-      CompensatedSum local;
-      for (const auto &p : partial)
-        local.add(p);
-      // the processes' sums, added in the order of the ranks (the same on
-      // every process)
-      const auto all = gather_all(x.get_mpi_communicator(),
-                                  std::array<double, 2>{{local.sum, local.error}});
-      CompensatedSum total;
-      for (const auto &[sum, error] : all)
-        {
-          total.add(sum);
-          total.error += error;
-        }
-      total.add(c);
-      return total.value();
-    }
-  } // namespace
 
 
   double

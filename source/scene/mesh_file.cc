@@ -2,7 +2,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <fosls_contact/input/input_error.h>
-#include <fosls_contact/input/parameter_reader.h>
+#include <fosls_contact/input/text_file.h>
 #include <fosls_contact/output/error_line.h>
 #include <fosls_contact/scene/mesh_file.h>
 
@@ -219,7 +219,7 @@ namespace FoslsContact
     std::string text;
     try
       {
-        text = ParameterReader::read_text(file, "mesh file", "");
+        text = TextFile::read(file, "mesh file", "");
       }
     catch (const InputError &e)
       {

@@ -3,12 +3,11 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <fosls_contact/scene/boundary_manifolds.h>
+#include <fosls_contact/scene/cell_shape_check.h>
 #include <fosls_contact/scene/curved_body.h>
+#include <fosls_contact/scene/data_expression.h>
 #include <fosls_contact/scene/scene.h>
 
-#include <muParser.h>
-
-#include <cctype>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -192,75 +191,7 @@ namespace FoslsContact
   void
   Scene<dim>::check_cell_shapes(const Triangulation<dim> &tria, const MPI_Comm comm) const
   {
-    // The Jacobian determinant of the bilinear map at every corner of every
-    // cell, on every level: a corner at or below 0 is an inverted (or
-    // degenerate) cell, where the FOSLS functional is no longer a sum of
-    // squares (measured: the half disc with Grading 3.7 gave J = -3.7e-5
-    // with the coarse mesh alone, Grading 4 with 3 levels J = -2.4e-3 and a
-    // contact force 28% off, while the area of every coarse cell was
-    // positive). Refinement moves the boundary vertices onto the circle, so
-    // the finer levels are checked too.
-    unsigned int first_bad_level = numbers::invalid_unsigned_int;
-    Point<dim>   bad_center;
-    for (const auto &cell : tria.cell_iterators())
-      {
-        Point<dim> vertices[GeometryInfo<dim>::vertices_per_cell];
-        double     diameter = cell->diameter();
-        for (const unsigned int v : cell->vertex_indices())
-          vertices[v] = cell->vertex(v);
-        Tensor<0, dim> forms[GeometryInfo<dim>::vertices_per_cell];
-        GeometryInfo<dim>::alternating_form_at_vertices(vertices, forms);
-        for (const unsigned int v : cell->vertex_indices())
-          if (!(double(forms[v]) > 1e-10 * std::pow(diameter, double(dim))) &&
-              static_cast<unsigned int>(cell->level()) < first_bad_level)
-            {
-              first_bad_level = cell->level();
-              bad_center      = cell->center();
-            }
-      }
-    const unsigned int level = Utilities::MPI::min(first_bad_level, comm);
-    if (level == numbers::invalid_unsigned_int)
-      return;
-    // where it is: the cell of the first process that has one on that level
-    const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
-    const unsigned int first = Utilities::MPI::min(first_bad_level == level ?
-                                                     rank :
-                                                     numbers::invalid_unsigned_int,
-                                                   comm);
-    bad_center               = Utilities::MPI::broadcast(comm, bad_center, first);
-    std::ostringstream where_text;
-    where_text << "an inverted or degenerate cell on level " << level + 1 << " at (";
-    for (unsigned int d = 0; d < dim; ++d)
-      where_text << (d ? ", " : "") << bad_center[d] * reference.length;
-    where_text << ") (a corner whose Jacobian is not positive)";
-    const std::string where = where_text.str();
-    switch (geometry.shape)
-      {
-        case Parameters::Geometry::Shape::box:
-          AssertThrow(false, ExcMessage("the mesh has " + where + "; check 'Geometry'"));
-          break;
-        case Parameters::Geometry::Shape::file:
-          AssertThrow(false,
-                      ExcMessage("the " + mesh_file->name() + " has " + where +
-                                 "; check the mesh and 'Geometry/Manifolds'" +
-                                 (mesh_file->distance_in_cells() > 1e5 ?
-                                    " (it lies far from the origin against the size of "
-                                    "its cells: deal.II's reader can turn a cell inside "
-                                    "out there; move the origin near the body)" :
-                                    "")));
-          break;
-        default:
-          {
-            const auto s = geometry.shape;
-            AssertThrow(false,
-                        ExcMessage("parameter 'Geometry/Grading' = " +
-                                   std::to_string(geometry.grading) + " distorts the " +
-                                   (s == Parameters::Geometry::Shape::half_disc ? "half disc" :
-                                    s == Parameters::Geometry::Shape::half_ball ? "half ball" :
-                                                                                  "half cylinder") +
-                                   ": the mesh has " + where + "; use a smaller grading"));
-          }
-      }
+    CellShapeCheck<dim>::check(tria, comm, geometry, mesh_file.get(), reference.length);
   }
 
 
@@ -270,71 +201,7 @@ namespace FoslsContact
                             const unsigned int n_components,
                             const std::string &name) const
   {
-    std::vector<std::string> expressions;
-    for (const auto &c : Utilities::split_string_list(expression, ';'))
-      expressions.push_back(c);
-    AssertThrow(expressions.size() == n_components,
-                ExcMessage("parameter '" + name + "' = '" + expression +
-                           "' has " + std::to_string(expressions.size()) +
-                           " component(s) separated by ';', expected " +
-                           std::to_string(n_components)));
-    // (the step of its finite-difference gradients is relative to L, so
-    // that they are equally accurate in every unit system)
-    auto function =
-      std::make_unique<FunctionParser<dim>>(n_components, 0., 1e-8 * reference.length);
-    const std::string variables = (dim == 2 ? "x,y" : "x,y,z");
-    // deal.II parses lazily: initialize, then evaluate once so that a
-    // malformed expression is reported here, with the parameter's name, and
-    // not in the middle of the assembly.
-    // muparser reports to std::cerr before deal.II throws: silence it, the
-    // error is reported once, in one line, below.
-    // (restored however the block below is left: a dangling std::cerr
-    // buffer crashed the program's error report)
-    std::ostringstream muted;
-    struct CerrRestore
-    {
-      std::streambuf *buffer;
-      ~CerrRestore() { std::cerr.rdbuf(buffer); }
-    } restore{std::cerr.rdbuf(muted.rdbuf())};
-    std::string reason;
-    try
-      {
-        function->initialize(variables, expressions, constants);
-        Point<dim> p;
-        for (unsigned int d = 0; d < dim; ++d)
-          p[d] = (0.123 + 0.1 * d) * reference.length;
-        Vector<double> values(n_components);
-        function->vector_value(p, values);
-      }
-    catch (const std::exception &e)
-      {
-        const std::string what = e.what();
-        const auto        pos  = what.find("The parser said:");
-        reason = pos == std::string::npos ? std::string("malformed expression") :
-                                            what.substr(pos + 16);
-        // deal.II wraps the text over several lines: join them
-        std::string joined;
-        for (const char c : reason)
-          if (!std::isspace(static_cast<unsigned char>(c)))
-            joined += c;
-          else if (!joined.empty() && joined.back() != ' ')
-            joined += ' ';
-        reason = Utilities::trim(joined);
-        // drop deal.II's trailing separator line
-        const auto dashes = reason.find("---");
-        if (dashes != std::string::npos)
-          reason = Utilities::trim(reason.substr(0, dashes));
-      }
-    catch (const mu::ParserError &e)
-      {
-        // muparser's own exception (not a std::exception): e.g. a constant
-        // name longer than muparser accepts
-        reason = e.GetMsg();
-      }
-    AssertThrow(reason.empty(),
-                ExcMessage("parameter '" + name + "' = '" + expression +
-                           "' is not a valid expression: " + reason));
-    return function;
+    return DataExpression<dim>::parse(expression, n_components, name, constants, reference.length);
   }
 
 

@@ -21,7 +21,7 @@
 #    the first process and swept in the order of the support points,
 #    Discretization::sweep_order(): the sweeps are those of one process).
 # Every level's DoFs are numbered by their support points within each
-# process's owned range (Discretization::renumber_level), so the numbering,
+# process's owned range (LevelDoFNumbering), so the numbering,
 # and with it the order of every sum, differs between process counts.
 # Measured (Nov 2026, with that numbering; the forces as printed in
 # summary.json, 12 digits): the iteration counts are equal in every case;

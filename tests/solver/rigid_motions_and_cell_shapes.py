@@ -4,7 +4,7 @@
 #    every one, also when they hold every DoF of a mode (a one-cell square
 #    with Dirichlet sides: the least-energy problem's mass matrix is then
 #    singular, which LAPACK's generalized solver refused);
-#  - cell shapes on every level (Scene::check_cell_shapes): the half disc
+#  - cell shapes on every level (CellShapeCheck): the half disc
 #    with Grading 3.7 had positive coarse cell areas but an inverted
 #    corner, and the run ended with J = -3.7e-5 (a sum of squares) without
 #    a word.

@@ -13,7 +13,7 @@
 //    (here that of deal.II's compute_Tmmult_pattern, which holds it).
 //    zero_round_off(drop) sets exactly the entries below drop relative to the
 //    diagonal to 0.
-// 3. MultilevelHierarchy::level_schedule keeps the order of every coupled
+// 3. VertexPatches::level_schedule keeps the order of every coupled
 //    pair of patches, so a smoothing step relaxed color by color in
 //    parallel gives the same bits as the sequential sweep over the patches
 //    in their order (checked against a hand-written sequential sweep on a
@@ -209,7 +209,7 @@ main(int argc, char *argv[])
   for (unsigned int p = 0; p < ordered.size(); ++p)
     color_dof[p] = p;
   const auto color =
-    MultilevelHierarchy<2>::level_schedule(coupled, color_dof, serial_partitioner(ordered.size()));
+    VertexPatches<2>::level_schedule(coupled, color_dof, serial_partitioner(ordered.size()));
   const unsigned int n_colors = *std::max_element(color.begin(), color.end()) + 1;
   bool order_kept = true;
   for (unsigned int a = 0; a < patches.size(); ++a)

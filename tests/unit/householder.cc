@@ -1,5 +1,5 @@
 // Checks the change to normal-tangential coordinates of paper section 4.3:
-//  - Discretization<dim>::householder(n) for tilted normals (and the
+//  - NormalTangentialBasis<dim>::householder(n) for tilted normals (and the
 //    special cases n = +-e_1) in 2D and 3D: H is symmetric, orthogonal and
 //    H e_1 = n;
 //  - on a square / cube / half disc with a tilted obstacle (Obstacle normal
@@ -25,6 +25,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <fosls_contact/discretization/discretization.h>
+#include <fosls_contact/discretization/normal_tangential_basis.h>
 
 #include "tests.h"
 
@@ -46,7 +47,7 @@ void
 test_householder(const Tensor<1, dim> &direction)
 {
   const Tensor<1, dim>     n = direction / direction.norm();
-  const FullMatrix<double> H = Discretization<dim>::householder(n);
+  const FullMatrix<double> H = NormalTangentialBasis<dim>::householder(n);
   FullMatrix<double>       HtH(dim, dim), identity(dim, dim);
   H.Tmmult(HtH, H);
   for (unsigned int i = 0; i < dim; ++i)
@@ -93,7 +94,7 @@ test_tilted_scene(const std::string &                              file,
       n_o[d] = Utilities::string_to_double(c[d]);
     n_o /= n_o.norm();
   }
-  const FullMatrix<double> H = Discretization<dim>::householder(n_o);
+  const FullMatrix<double> H = NormalTangentialBasis<dim>::householder(n_o);
 
   // a constant, non-symmetric stress
   Tensor<2, dim> sigma_0;

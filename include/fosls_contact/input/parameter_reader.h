@@ -3,10 +3,9 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <fosls_contact/input/declared_parameters.h>
 #include <fosls_contact/input/input_error.h>
 
-#include <map>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -51,15 +50,6 @@ namespace FoslsContact
     /** Apply one `--set "Section/Subsection/Name=value"`. */
     void set(const std::string &assignment);
 
-    /**
-     * The content of the regular file @p file, or an InputError (at @p where)
-     * that names the real cause: does not exist, permission denied, a
-     * directory, a FIFO or device, ... @p what says what the file is
-     * ("parameter file", "included file").
-     */
-    static std::string read_text(const std::string &file,
-                                 const std::string &what,
-                                 const std::string &where);
 
   private:
     /** Read the `.prm` @p text of @p file (canonical path @p canonical). */
@@ -85,14 +75,8 @@ namespace FoslsContact
     /** An Error at @p where if the section @p path is not declared. */
     void check_section(const std::string &path, const std::string &where) const;
 
-    /** "; did you mean 'X'?" for the declared name closest to @p path, or "". */
-    std::string suggestion(const std::string &path, const bool section) const;
-
-    ParameterHandler &prm;
-    /** Every declared parameter ("Section/Name") with its pattern's description. */
-    std::map<std::string, std::string> entries;
-    /** Every declared section ("Section", "Section/Subsection"). */
-    std::set<std::string> sections;
+    ParameterHandler &       prm;
+    const DeclaredParameters declared;
     /** The sections entered at the current line of a `.prm` file. */
     std::vector<std::string> current;
     /** The canonical paths of the files being read (to find include cycles). */

@@ -3,7 +3,7 @@
 
 #include <deal.II/base/tensor.h>
 
-#include <fosls_contact/output/postprocessor.h>
+#include <fosls_contact/output/contact_table.h>
 #include <fosls_contact/parameters.h>
 
 #include <array>
@@ -45,8 +45,8 @@ namespace FoslsContact
                     const Tensor<1, dim> &             normal);
 
     /**
-     * Compare with @p force and the contact table @p rows (Postprocessor::
-     * contact_rows()).
+     * Compare with @p force and the contact table @p rows
+     * (ContactTable::rows()).
      */
     void evaluate(const Tensor<1, dim> &                           force,
                   const std::vector<typename ContactRow<dim>::Values> &rows);

@@ -5,6 +5,8 @@
 #include <deal.II/base/timer.h>
 
 #include <fosls_contact/parameters.h>
+#include <fosls_contact/output/iteration_record.h>
+#include <fosls_contact/output/stopping_rules.h>
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/solvers/iteration_observer.h>
 
@@ -13,19 +15,6 @@
 
 namespace FoslsContact
 {
-  /** What is recorded after each iteration of any solver. */
-  struct IterationRecord
-  {
-    unsigned int    iteration = 0;
-    FunctionalValue functional;
-    double          correction    = 0; ///< energy norm of x_k - x_{k-1}
-    double          rate          = 0; ///< correction_k / correction_{k-1}
-    unsigned int    active        = 0;
-    double          violation     = 0;
-    double          round_off     = 0; ///< ConstrainedQP::round_off_correction
-    double          wall_seconds  = 0;
-  };
-
   /**
    * The one place where solvers report (their IterationObserver): every
    * solver calls report() after each iteration, and the monitor computes J
@@ -154,35 +143,15 @@ namespace FoslsContact
      * Whether the last correction is at the round-off floor of the
      * corrections at @p x (ConstrainedQP::round_off_correction()), with the
      * rate @p rho and the error factor @p factor = max(1, rho/(1 - rho)),
-     * or the corrections stagnate above it. Sets the record's round-off.
+     * or the corrections stagnate above it (StoppingRules). Sets the
+     * record's round-off.
      */
     bool at_round_off_floor(const LevelVector &x, const double rho, const double factor);
-    /** The stopping criterion "discretization accuracy" on the history. */
-    bool at_discretization_accuracy() const;
-    /** The stall test of enable_stall_detection() on the history. */
-    bool detect_stall();
-
-    /**
-     * The stall test's constants. The plain cycle where the contact zone
-     * ends inside coarse faces creeps at 0.996 to 1.000 per iteration
-     * with the active set settled (half disc, 3 levels; the square
-     * [-1,1] x [0,1] with the gap 0.02 - 0.015 x^2, 5 levels), its
-     * estimated error 1e6 to 3e7 times the tolerance's target, and is found from
-     * iteration 12 to 15 on. The slowest converging runs of the tests keep
-     * a margin: the plain cycle creeping at 0.997 on the square with
-     * contact at one end (mg_round_off_stop, 1368 iterations allowed
-     * 3000) would need 2.5 times the iterations left, and every other
-     * multigrid run of the tests has no 5 steady rates above 0.99 in the
-     * linear phase.
-     */
-    static constexpr unsigned int stall_window = 5;
-    static constexpr double       stall_rate   = 0.99;
-    static constexpr double       stall_excess = 10.;
-
     const ConstrainedQP &         qp;
     const Parameters::Solver      parameters;
     const ConditionalOStream &    pcout;
     const std::string             solver_name;
+    const StoppingRules           rules;
     std::vector<IterationRecord>  history;
     /**
      * The active set of the last iterate (owned DoFs), and the iteration

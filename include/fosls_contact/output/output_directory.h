@@ -72,7 +72,7 @@ namespace FoslsContact
   private:
     /** The work of the constructor on the first process. */
     void prepare();
-    /** The work of publish() on the first process. */
+    /** The work of publish() on the first process (DirectorySwap). */
     void publish_here(const std::set<std::string> &names);
     /** Remove the staging or old directory @p stale of an earlier run (killed). */
     void clean_stale(const std::filesystem::path &stale) const;

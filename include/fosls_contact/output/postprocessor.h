@@ -25,23 +25,6 @@ namespace FoslsContact
     }
   };
 
-  /**
-   * A row of the contact table (Postprocessor::contact_rows(), contact.csv):
-   * the positions of its entries.
-   */
-  template <int dim>
-  struct ContactRow
-  {
-    static constexpr unsigned int x        = 0;       ///< position (dim)
-    static constexpr unsigned int u        = dim;     ///< displacement (dim)
-    static constexpr unsigned int u_n      = 2 * dim; ///< normal displacement
-    static constexpr unsigned int gap      = 2 * dim + 1;
-    static constexpr unsigned int sigma_nn = 2 * dim + 2; ///< mean normal traction
-    static constexpr unsigned int active   = 2 * dim + 3; ///< 1 in contact, else 0
-    static constexpr unsigned int size     = 2 * dim + 4;
-    using Values                           = std::array<double, size>;
-  };
-
   /** Extremes of the fields, in the scene's units. */
   struct FieldMaxima
   {
@@ -53,13 +36,13 @@ namespace FoslsContact
    * The last box of the data path: rotates the solution back to Cartesian
    * coordinates, converts it to the scene's units (PhysicalMapping: the
    * mesh times L, displacements times L, stresses times S) and computes
-   * what users look at (contact force, contact table, error norms), then
+   * what users look at (contact force, error norms, field maxima), then
    * writes every output file into the staging directory of an
    * OutputDirectory and publishes them there, all at once.
    *
    * Distributed: every process integrates over its own cells and writes
-   * one VTU piece of them; the numbers are summed over the processes, the
-   * contact table gathered (rows sorted by position), and the first
+   * one VTU piece of them (VtuOutput); the numbers are summed over the
+   * processes, the contact table gathered (ContactTable), and the first
    * process writes the other files.
    */
   template <int dim>
@@ -99,19 +82,6 @@ namespace FoslsContact
     FieldMaxima field_maxima(const LevelVector &solution) const;
 
     /**
-     * One row per contact vertex of the finest level, sorted by position,
-     * in the scene's units (ContactRow): the position, the displacement,
-     * u_n, the gap, sigma_nn (the mean over the contact faces at the
-     * vertex) and 1 if the vertex is in contact (u_n = g), else 0. On the
-     * first process; collective.
-     */
-    std::vector<typename ContactRow<dim>::Values>
-    contact_rows(const LevelVector &x_rotated) const;
-
-    /** contact_rows() as CSV text (on the first process; collective). */
-    std::string contact_table(const LevelVector &x_rotated) const;
-
-    /**
      * Write VTU (+pvtu), contact.csv, convergence.csv, summary.json and
      * used_parameters.prm into @p output and publish them (collective).
      * @p summary holds the JSON fields (already formatted values).
@@ -124,26 +94,6 @@ namespace FoslsContact
                OutputDirectory &                          output) const;
 
   private:
-    /**
-     * The solution's VTU piece of this process (the fields of
-     * StressFields, the error indicators, the contact status), and on the
-     * first process the pvtu record and the pvd series; with contact, the
-     * same for the ContactSurface.
-     */
-    void write_vtu(const LevelVector &         x_rotated,
-                   const ErrorIndicators<dim> &indicators,
-                   OutputDirectory &           output) const;
-    /**
-     * Write the piece @p name.<process>.vtu of @p writer (a DataOut or
-     * DataOutFaces after build_patches) and, on the first process, the
-     * record @p name.pvtu, both naming the @p active fields.
-     */
-    template <typename Writer>
-    void write_pieces(Writer &           writer,
-                      const std::string &name,
-                      const std::string &active,
-                      OutputDirectory &  output) const;
-
     const Discretization<dim> &     discretization;
     const Parameters::AllParameters parameters;
     const Scaling                   scaling;

@@ -6,6 +6,7 @@
 #include <fosls_contact/qp/algebraic_level.h>
 #include <fosls_contact/qp/dof_role.h>
 #include <fosls_contact/qp/level_algebra.h>
+#include <fosls_contact/qp/sparse_round_off.h>
 
 namespace FoslsContact
 {
@@ -26,26 +27,6 @@ namespace FoslsContact
   {
     double total = 0, eq = 0, constitutive = 0, complementarity = 0;
   };
-
-  /**
-   * Set the entries of the owned rows of @p matrix (a local matrix on
-   * @p partitioner's indices) with |a_ij| <= drop sqrt(|a_ii a_jj|) to 0
-   * (in parallel, by rows). With drop = ConstrainedQP::round_off_drop
-   * these are the entries that exact arithmetic makes zero: couplings that
-   * cancel in the assembly of A, or in a Galerkin product of it. The
-   * diagonal of the ghost columns comes from their owners.
-   */
-  void zero_round_off(SparseMatrix<double> &                                     matrix,
-                      const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-                      const double                                               drop);
-
-  /**
-   * The diagonal of a local matrix (owned rows), with its ghost values:
-   * the diagonal entries of the ghost DoFs, from their owners.
-   */
-  LevelVector diagonal(const SparseMatrix<double> &                                matrix,
-                       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner);
-
 
   /**
    * The seam of the program: a box-constrained quadratic problem

@@ -92,7 +92,7 @@ namespace FoslsContact
      * Refuse a mesh with a cell whose corner has a Jacobian determinant
      * <= 0 on any level (a graded half disc bent too far, a twisted cell
      * of a mesh file, a file mesh's manifold that pulls a refined boundary
-     * vertex through its cell). Collective on @p comm.
+     * vertex through its cell; CellShapeCheck). Collective on @p comm.
      */
     void check_cell_shapes(const Triangulation<dim> &tria, const MPI_Comm comm) const;
 
@@ -100,6 +100,7 @@ namespace FoslsContact
     static double mesh_size_ratio(const Triangulation<dim> &triangulation);
 
   private:
+    /** The data expression of parameter @p name (DataExpression). */
     std::unique_ptr<FunctionParser<dim>>
     make_function(const std::string &expression,
                   const unsigned int n_components,

@@ -1,0 +1,140 @@
+#ifndef fosls_contact_discretization_level_data_h
+#define fosls_contact_discretization_level_data_h
+
+#include <deal.II/base/geometry_info.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <fosls_contact/qp/algebraic_level.h>
+
+#include <array>
+#include <map>
+#include <set>
+#include <vector>
+
+namespace FoslsContact
+{
+  using namespace dealii;
+
+  /**
+   * Whether @p cell (of any level) has DoFs on this process: owned or
+   * ghost. Every loop over the cells of a level that builds level data
+   * asks this, so it is said once.
+   */
+  template <typename Iterator>
+  bool
+  level_cell_is_present(const Iterator &cell)
+  {
+    return cell->level_subdomain_id() != numbers::artificial_subdomain_id;
+  }
+
+
+  /**
+   * A block of DoFs whose coordinates are changed to the normal-tangential
+   * system of paper section 4.3: x_cartesian = matrix * x_rotated on
+   * `dofs` (local indices). The first rotated coordinate is the normal one.
+   */
+  template <int dim>
+  struct RotationBlock
+  {
+    std::array<types::global_dof_index, dim> dofs;
+    FullMatrix<double>                       matrix;
+    FullMatrix<double>                       inverse;
+  };
+
+  /**
+   * A contact vertex on one level: u.n <= g bounds DoF `normal_dof` (a
+   * local index; `owned` if this process owns it).
+   */
+  template <int dim>
+  struct ContactVertex
+  {
+    unsigned int             vertex_index;
+    types::global_dof_index  normal_dof;
+    Point<dim>               point;
+    Tensor<1, dim>           normal;
+    double                   gap;
+    bool                     owned;
+  };
+
+  /** A contact face on one level: (sigma n).n <= 0 bounds `normal_dof`. */
+  template <int dim>
+  struct ContactFace
+  {
+    unsigned int             face_index;
+    types::global_dof_index  normal_dof;
+    Point<dim>               center;
+    Tensor<1, dim>           normal;
+    double                   area;
+    bool                     owned;
+  };
+
+  /**
+   * One level of the discretization on this process: the algebra's view
+   * of it (AlgebraicLevel: the DoFs it owns and its ghost DoFs, those of
+   * the ghost cells around its own cells, their roles, fixed values and
+   * upper bounds in the rotated basis, the coupling pattern), and the
+   * mesh's: the rotations, the contact entities, and which DoFs belong to
+   * which vertex and face. All DoFs are local indices (LevelVector).
+   */
+  template <int dim>
+  struct LevelData : AlgebraicLevel
+  {
+    LevelData() { dimension = dim; }
+
+    /** The local level DoFs of @p cell (a cell of this level). */
+    template <typename Iterator>
+    void get_local_dofs(const Iterator &cell, std::vector<types::global_dof_index> &dofs) const
+    {
+      dofs.resize(cell->get_dof_handler().get_fe().n_dofs_per_cell());
+      cell->get_mg_dof_indices(dofs);
+      for (auto &dof : dofs)
+        dof = partitioner->global_to_local(dof);
+    }
+
+    std::vector<RotationBlock<dim>>         rotations;
+    /** For each local DoF, the index of its rotation block, or invalid. */
+    std::vector<unsigned int>               rotation_of_dof;
+    /** The contact vertices and faces of the cells of this process. */
+    std::vector<ContactVertex<dim>>         contact_vertices;
+    std::vector<ContactFace<dim>>           contact_faces;
+    /**
+     * vertex index -> its displacement DoFs (component by component), for
+     * the vertices of the cells here; local indices.
+     */
+    std::map<unsigned int, std::array<types::global_dof_index, dim>> vertex_dofs;
+    /** face index -> its RT DoFs (stress row by row); local indices. */
+    std::map<unsigned int, std::array<types::global_dof_index, dim>> face_dofs;
+    /**
+     * The vertices of the cells this process owns on the level: it relaxes
+     * the patches there that have a DoF it owns, and all cells at them are
+     * here.
+     */
+    std::set<unsigned int> owned_cell_vertices;
+  };
+
+  /**
+   * Call @p f(dof) for the DoFs of the Arnold-Falk-Winther patch of vertex
+   * @p v of @p cell that lie in this cell: the vertex's displacement DoFs
+   * and the RT DoFs (all stress rows) of the cell's faces at the vertex.
+   * The patch is the union over the cells at the vertex.
+   */
+  template <int dim, typename Iterator, typename Function>
+  void
+  for_patch_dofs_in_cell(const LevelData<dim> &level,
+                         const Iterator &      cell,
+                         const unsigned int    v,
+                         const Function &      f)
+  {
+    for (const auto dof : level.vertex_dofs.at(cell->vertex_index(v)))
+      f(dof);
+    for (const unsigned int face : cell->face_indices())
+      for (unsigned int i = 0; i < GeometryInfo<dim>::vertices_per_face; ++i)
+        if (GeometryInfo<dim>::face_to_cell_vertices(face, i) == v)
+          for (const auto dof : level.face_dofs.at(cell->face(face)->index()))
+            f(dof);
+  }
+} // namespace FoslsContact
+
+#endif

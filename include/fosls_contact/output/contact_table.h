@@ -1,0 +1,69 @@
+#ifndef fosls_contact_output_contact_table_h
+#define fosls_contact_output_contact_table_h
+
+#include <fosls_contact/discretization/discretization.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace FoslsContact
+{
+  /**
+   * A row of the contact table (ContactTable::rows(), contact.csv):
+   * the positions of its entries.
+   */
+  template <int dim>
+  struct ContactRow
+  {
+    static constexpr unsigned int x        = 0;       ///< position (dim)
+    static constexpr unsigned int u        = dim;     ///< displacement (dim)
+    static constexpr unsigned int u_n      = 2 * dim; ///< normal displacement
+    static constexpr unsigned int gap      = 2 * dim + 1;
+    static constexpr unsigned int sigma_nn = 2 * dim + 2; ///< mean normal traction
+    static constexpr unsigned int active   = 2 * dim + 3; ///< 1 in contact, else 0
+    static constexpr unsigned int size     = 2 * dim + 4;
+    using Values                           = std::array<double, size>;
+  };
+
+
+  /**
+   * The solution at the contact vertices of the finest level, one row per
+   * vertex in the scene's units, gathered on the first process and sorted
+   * by position so that contact.csv and the Hertz comparison are the same
+   * on any number of processes. Which vertex counts as in contact is
+   * decided here (in_contact()), for the table and the VTU's contact
+   * status alike.
+   */
+  template <int dim>
+  class ContactTable
+  {
+  public:
+    explicit ContactTable(const Discretization<dim> &discretization);
+
+    /**
+     * One row per contact vertex of the finest level, sorted by position,
+     * in the scene's units (ContactRow): the position, the displacement,
+     * u_n, the gap, sigma_nn (the mean over the contact faces at the
+     * vertex) and 1 if the vertex is in contact (u_n = g), else 0. On the
+     * first process; collective.
+     */
+    std::vector<typename ContactRow<dim>::Values> rows(const LevelVector &x_rotated) const;
+
+    /** rows() as CSV text (on the first process; collective). */
+    std::string csv(const LevelVector &x_rotated) const;
+
+    /**
+     * Whether a contact vertex with normal displacement @p u_n is in
+     * contact with the obstacle at gap @p gap: the solvers leave an active
+     * DoF at its bound up to round-off, relative to the gap and to 1 (a
+     * gap of 0).
+     */
+    static bool in_contact(const double u_n, const double gap);
+
+  private:
+    const Discretization<dim> &discretization;
+  };
+} // namespace FoslsContact
+
+#endif

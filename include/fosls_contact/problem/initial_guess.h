@@ -1,0 +1,52 @@
+#ifndef fosls_contact_problem_initial_guess_h
+#define fosls_contact_problem_initial_guess_h
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <fosls_contact/discretization/discretization.h>
+#include <fosls_contact/discretization/level_transfer.h>
+#include <fosls_contact/parameters.h>
+#include <fosls_contact/qp/constrained_qp.h>
+#include <fosls_contact/scene/scene.h>
+
+namespace FoslsContact
+{
+  /**
+   * The start of the solve on the finest level (Solver/Initial guess):
+   * zero, the exact solution of level 1 interpolated (paper section 7),
+   * nested iteration over the levels, or Data/Initial displacement. The
+   * two level-wise guesses assemble and solve coarser problems and carry
+   * rotated vectors between levels, work of its own beside the solve.
+   */
+  template <int dim>
+  class InitialGuess
+  {
+  public:
+    InitialGuess(const Parameters::AllParameters &parameters,
+                 const Scene<dim> &               scene,
+                 const Discretization<dim> &      discretization,
+                 const LevelTransfer<dim> &       transfer,
+                 const ConditionalOStream &       pcout);
+
+    /**
+     * The initial guess for @p qp, the finest level's problem, in
+     * @p solution (rotated); notes a start that violates the contact
+     * constraints (the solver projects it).
+     */
+    void compute(const ConstrainedQP &qp, LevelVector &solution) const;
+
+  private:
+    /** Solve the problem assembled on level @p level (for initial guesses). */
+    LevelVector solve_on_level(const unsigned int level, const LevelVector *start) const;
+    /** Interpolate a rotated level-l vector to level l+1 (rotated). */
+    LevelVector prolongate_rotated(const unsigned int to_level, const LevelVector &coarse) const;
+
+    const Parameters::AllParameters &parameters;
+    const Scene<dim> &               scene;
+    const Discretization<dim> &      discretization;
+    const LevelTransfer<dim> &       transfer;
+    const ConditionalOStream &       pcout;
+  };
+} // namespace FoslsContact
+
+#endif

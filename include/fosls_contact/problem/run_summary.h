@@ -1,0 +1,95 @@
+#ifndef fosls_contact_problem_run_summary_h
+#define fosls_contact_problem_run_summary_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <fosls_contact/assembly/error_indicators.h>
+#include <fosls_contact/discretization/discretization.h>
+#include <fosls_contact/output/monitor.h>
+#include <fosls_contact/output/postprocessor.h>
+#include <fosls_contact/parameters.h>
+#include <fosls_contact/qp/constrained_qp.h>
+#include <fosls_contact/scene/scene.h>
+#include <fosls_contact/solvers/qp_solver.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace FoslsContact
+{
+  /** Resident memory (MB, all processes) after a phase of FoslsProblem::run(). */
+  struct PhaseMemory
+  {
+    std::string phase;
+    double      rss_mb;
+    double      peak_rss_mb;
+  };
+
+
+  /**
+   * The entries of summary.json, the record of a run that the tests and
+   * bench/ scripts read: what the run cost, how the solver did, the
+   * solution's figures in the scene's units, the Hertz comparison and the
+   * errors against an exact solution. Each figure is computed from the
+   * finished run's objects, so they are gathered here rather than in the
+   * driver that made them.
+   */
+  template <int dim>
+  class RunSummary
+  {
+  public:
+    /** summary.json's entries by name, each JSON text (Postprocessor::write()). */
+    using Summary = std::map<std::string, std::string>;
+
+    RunSummary(const Parameters::AllParameters &parameters,
+               const Scene<dim> &               scene,
+               const Discretization<dim> &      discretization,
+               const ConstrainedQP &            qp,
+               const LevelVector &              solution,
+               const QPSolver &                 solver,
+               const Monitor &                  monitor,
+               const ConditionalOStream &       pcout);
+
+    /**
+     * What the run cost: times, peak memory, communication (collective,
+     * first in the output so that the peak memory is the solve's).
+     */
+    Summary cost(const TimerOutput &              timer,
+                 const double                     time_setup,
+                 const double                     time_solve,
+                 const std::vector<PhaseMemory> & phase_memory,
+                 const CommunicationCounter &     solve_communication) const;
+    /** The problem's size and how the solver did (iterations, rates, statistics). */
+    void add_solver(Summary &summary) const;
+    /**
+     * The solution's figures in the scene's units: J and its parts, the
+     * contact force, the error indicators, the largest displacement and
+     * stress; returns J.
+     */
+    FunctionalValue add_solution(Summary &                   summary,
+                                 const Postprocessor<dim> &  post,
+                                 const LevelVector &         cartesian,
+                                 const Tensor<1, dim> &      force,
+                                 const ErrorIndicators<dim> &indicators) const;
+    /** The comparison with Hertz's contact pressure, for a scene that declares one. */
+    void add_hertz_comparison(Summary &                 summary,
+                              const Postprocessor<dim> &post,
+                              const Tensor<1, dim> &    force) const;
+    /** The errors against the scene's exact solution; refuses non-finite ones. */
+    void add_errors(Summary &summary, const Postprocessor<dim> &post, const LevelVector &cartesian) const;
+
+  private:
+    const Parameters::AllParameters &parameters;
+    const Scene<dim> &               scene;
+    const Discretization<dim> &      discretization;
+    const ConstrainedQP &            qp;
+    const LevelVector &              solution;
+    const QPSolver &                 solver;
+    const Monitor &                  monitor;
+    const ConditionalOStream &       pcout;
+  };
+} // namespace FoslsContact
+
+#endif

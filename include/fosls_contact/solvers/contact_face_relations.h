@@ -1,0 +1,83 @@
+#ifndef fosls_contact_solvers_contact_face_relations_h
+#define fosls_contact_solvers_contact_face_relations_h
+
+#include <fosls_contact/discretization/discretization.h>
+
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace FoslsContact
+{
+  /**
+   * A coarse contact face of level l - 1 owned here and what its coarse
+   * obstacles need from level l (paper eqs. 13, 25-30): its sons, and the
+   * coarse contact edges of the face (the face itself in 2D) with the fine
+   * normal DoFs at their ends and midpoints; in 3D the face's center. All
+   * DoFs are local indices: coarse ones of level l - 1, fine ones of
+   * level l. The coarse cell of a boundary face is the one cell at it, so
+   * every coarse contact face is owned by exactly one process, which has
+   * all its children.
+   */
+  struct FaceRelation
+  {
+    types::global_dof_index              coarse_dof;
+    std::vector<types::global_dof_index> sons;
+    /**
+     * The fine DoFs of the coarse cell's children that do not lie on one
+     * of its other faces (sorted): the DoFs the flux rerouting may use, so
+     * that the rerouted column stays inside the coarse cell and the
+     * Galerkin operator on the coupling pattern of the coarse cells.
+     */
+    std::vector<types::global_dof_index> inside;
+    /** A coarse contact edge of the face: both ends and the midpoint. */
+    struct Edge
+    {
+      /** coarse normal DoFs of the ends (invalid if an end is not bounded) */
+      std::array<types::global_dof_index, 2> coarse;
+      /** fine normal DoFs of the ends */
+      std::array<types::global_dof_index, 2> fine;
+      types::global_dof_index                fine_midpoint;
+    };
+    std::vector<Edge> edges;
+    /** 3D: the fine normal DoF of the face center, or invalid. */
+    types::global_dof_index fine_center = numbers::invalid_dof_index;
+    /** 3D: the coarse normal DoFs of the face's bounded vertices. */
+    std::vector<types::global_dof_index> coarse_vertices;
+  };
+
+
+  /**
+   * How the contact faces of level l - 1 relate to those of level l: the
+   * geometry that the coarse obstacles (CoarseObstacles) and the flux
+   * rerouting (FluxRerouting) work with, found once from the mesh so that
+   * neither of them walks cells. Built once per level by
+   * MultilevelHierarchy.
+   */
+  template <int dim>
+  struct ContactFaceRelations
+  {
+    ContactFaceRelations() = default;
+    /** The relations between levels @p l - 1 and @p l of @p discretization. */
+    ContactFaceRelations(const Discretization<dim> &discretization, const unsigned int l);
+
+    /** Coarse contact faces of level l - 1 owned here. */
+    std::vector<FaceRelation> faces;
+    /**
+     * The entries (local fine DoF, local coarse contact face DoF) the flux
+     * rerouting may give the prolongation (MultilevelHierarchy::
+     * rerouting_entries()).
+     */
+    std::vector<std::pair<types::global_dof_index, types::global_dof_index>> rerouting;
+
+  private:
+    /** The FaceRelation of contact face @p f of the coarse @p cell. */
+    template <typename Iterator>
+    FaceRelation face_relation(const Iterator &      cell,
+                               const unsigned int    f,
+                               const LevelData<dim> &coarse,
+                               const LevelData<dim> &fine) const;
+  };
+} // namespace FoslsContact
+
+#endif

@@ -1,0 +1,111 @@
+#include <deal.II/base/mpi.h>
+
+#include <fosls_contact/output/contact_table.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+namespace FoslsContact
+{
+  template <int dim>
+  ContactTable<dim>::ContactTable(const Discretization<dim> &discretization)
+    : discretization(discretization)
+  {}
+
+
+  template <int dim>
+  bool
+  ContactTable<dim>::in_contact(const double u_n, const double gap)
+  {
+    constexpr double round_off = 1e-12;
+    return u_n >= gap - round_off * std::max(1., std::abs(gap));
+  }
+
+
+  template <int dim>
+  std::vector<typename ContactRow<dim>::Values>
+  ContactTable<dim>::rows(const LevelVector &x) const
+  {
+    using Row           = ContactRow<dim>;
+    const Scaling &scaling = discretization.get_scene().scaling();
+    const auto &level = discretization.level(discretization.finest_level());
+    update_ghosts(x);
+    // the displacement in Cartesian coordinates, at the vertices
+    LevelVector cartesian = x;
+    discretization.rotate_to_cartesian(discretization.finest_level(), cartesian);
+    // sigma_nn at a vertex: mean over the contact faces that contain it
+    // (all of them are here for an owned vertex)
+    std::map<unsigned int, std::pair<double, unsigned int>> face_mean;
+    for (const auto &cell : discretization.get_dof_handler()
+                              .mg_cell_iterators_on_level(discretization.finest_level()))
+      if (Discretization<dim>::is_present(cell))
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f) &&
+              discretization.get_scene().is_contact(cell->face(f)->boundary_id()))
+            {
+              const auto   face = cell->face(f);
+              const double s = x.local_element(level.face_dofs.at(face->index())[0]);
+              for (const unsigned int v : face->vertex_indices())
+                {
+                  auto &entry = face_mean[face->vertex_index(v)];
+                  entry.first += s;
+                  entry.second += 1;
+                }
+            }
+    std::vector<typename Row::Values> rows;
+    for (const auto &cv : level.contact_vertices)
+      if (cv.owned)
+        {
+          const double un = x.local_element(cv.normal_dof);
+          const auto   it = face_mean.find(cv.vertex_index);
+          const double snn =
+            it == face_mean.end() ? 0. : it->second.first / it->second.second;
+          const auto &          dofs = level.vertex_dofs.at(cv.vertex_index);
+          typename Row::Values row;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              row[Row::x + d] = scaling.length * cv.point[d];
+              row[Row::u + d] = scaling.length * cartesian.local_element(dofs[d]);
+            }
+          row[Row::u_n]      = scaling.length * un;
+          row[Row::gap]      = scaling.length * cv.gap;
+          row[Row::sigma_nn] = scaling.stress * snn;
+          row[Row::active]   = in_contact(un, cv.gap) ? 1 : 0;
+          rows.push_back(row);
+        }
+    const auto all = Utilities::MPI::gather(discretization.get_communicator(), rows, 0);
+    rows.clear();
+    for (const auto &part : all)
+      rows.insert(rows.end(), part.begin(), part.end());
+    std::sort(rows.begin(), rows.end(), [](const auto &a, const auto &b) {
+      return std::lexicographical_compare(a.begin(), a.begin() + dim, b.begin(), b.begin() + dim);
+    });
+    return rows;
+  }
+
+
+  template <int dim>
+  std::string
+  ContactTable<dim>::csv(const LevelVector &x) const
+  {
+    const auto         rows = this->rows(x);
+    std::ostringstream out;
+    if (Utilities::MPI::this_mpi_process(discretization.get_communicator()) != 0)
+      return out.str();
+    out << (dim == 2 ? "x,y,u_x,u_y" : "x,y,z,u_x,u_y,u_z") << ",u_n,gap,sigma_nn,active\n";
+    out << std::setprecision(10);
+    for (const auto &row : rows)
+      {
+        for (unsigned int d = 0; d < ContactRow<dim>::active; ++d)
+          out << row[d] << ',';
+        out << int(row[ContactRow<dim>::active]) << '\n';
+      }
+    return out.str();
+  }
+
+
+  template class ContactTable<2>;
+  template class ContactTable<3>;
+} // namespace FoslsContact

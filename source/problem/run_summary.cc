@@ -1,0 +1,237 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <fosls_contact/build_info.h>
+#include <fosls_contact/output/contact_table.h>
+#include <fosls_contact/output/hertz_comparison.h>
+#include <fosls_contact/output/json.h>
+#include <fosls_contact/problem/run_summary.h>
+#include <fosls_contact/problem/solver_choice.h>
+
+#include <iomanip>
+
+namespace FoslsContact
+{
+  namespace
+  {
+    const auto number = json_number;
+  } // namespace
+
+
+  template <int dim>
+  RunSummary<dim>::RunSummary(const Parameters::AllParameters &parameters,
+                              const Scene<dim> &               scene,
+                              const Discretization<dim> &      discretization,
+                              const ConstrainedQP &            qp,
+                              const LevelVector &              solution,
+                              const QPSolver &                 solver,
+                              const Monitor &                  monitor,
+                              const ConditionalOStream &       pcout)
+    : parameters(parameters)
+    , scene(scene)
+    , discretization(discretization)
+    , qp(qp)
+    , solution(solution)
+    , solver(solver)
+    , monitor(monitor)
+    , pcout(pcout)
+  {}
+
+
+  template <int dim>
+  typename RunSummary<dim>::Summary
+  RunSummary<dim>::cost(const TimerOutput &             timer,
+                        const double                    time_setup,
+                        const double                    time_solve,
+                        const std::vector<PhaseMemory> &phase_memory,
+                        const CommunicationCounter &    solve_communication) const
+  {
+    // first, so that the peak memory is that of the solve, not of the
+    // output's own vectors
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    const MPI_Comm comm    = discretization.get_communicator();
+    const double   peak_mb = memory.VmHWM / 1024.;
+
+    Summary summary;
+    summary["git_revision"]    = "\"" + BuildInfo::git_revision() + "\"";
+    summary["deal_ii_version"] = "\"" + BuildInfo::deal_ii_version() + "\"";
+    summary["time_setup_s"]    = number(time_setup);
+    summary["time_solve_s"]    = number(time_solve);
+    // peak resident memory: all processes together, and the largest one
+    summary["peak_rss_mb"]             = number(Utilities::MPI::sum(peak_mb, comm));
+    summary["peak_rss_mb_per_process"] = number(Utilities::MPI::max(peak_mb, comm));
+    std::vector<std::string> phases;
+    for (const auto &[phase, rss_mb, peak_rss_mb] : phase_memory)
+      phases.push_back("{\"phase\": \"" + phase + "\", \"rss_mb\": " + number(rss_mb) +
+                       ", \"peak_rss_mb\": " + number(peak_rss_mb) + "}");
+    summary["memory_by_phase"] = json_array(phases);
+    summary["mpi_processes"] = std::to_string(Utilities::MPI::n_mpi_processes(comm));
+    // communication of the solve: point-to-point exchanges of the busiest
+    // process, values sent by all; and the ghost DoFs per level (all
+    // processes), the surface the exchanges move
+    summary["solve_exchanges"] =
+      std::to_string(Utilities::MPI::max(solve_communication.exchanges, comm));
+    summary["solve_values_sent"] =
+      std::to_string(Utilities::MPI::sum(solve_communication.values, comm));
+    std::vector<std::string> ghosts;
+    for (unsigned int l = 0; l < discretization.n_levels(); ++l)
+      ghosts.push_back(std::to_string(
+        Utilities::MPI::sum(discretization.level(l).partitioner->n_ghost_indices(), comm)));
+    summary["ghost_dofs_per_level"] = json_array(ghosts);
+
+    // wall seconds of every TimerOutput section finished so far (the output
+    // section itself is still running) and of the parts of the solve
+    auto times = timer.get_summary_data(TimerOutput::total_wall_time);
+    for (const auto &[name, time] : solver.statistics().sections)
+      times[name] = time.seconds;
+    std::string sections = "{";
+    for (const auto &[name, seconds] : times)
+      if (name != "Output")
+        sections += std::string(sections.size() > 1 ? ", " : "") + "\"" + name +
+                    "\": " + number(seconds);
+    summary["time_sections_s"] = sections + "}";
+    return summary;
+  }
+
+
+  template <int dim>
+  void
+  RunSummary<dim>::add_solver(Summary &summary) const
+  {
+    summary["dimension"]  = std::to_string(dim);
+    summary["dofs"]       = std::to_string(qp.size());
+    summary["levels"]     = std::to_string(discretization.n_levels());
+    summary["solver"]     = std::string("\"") + SolverChoice<dim>::name(parameters.solver.type) + "\"";
+    summary["iterations"] = std::to_string(monitor.iterations());
+    summary["converged"]  = monitor.converged() ? "true" : "false";
+    summary["stopped_at_round_off"] = monitor.stopped_at_round_off() ? "true" : "false";
+    summary["stop_reason"]          = "\"" + monitor.stop_reason() + "\"";
+    summary["rate_asymptotic"]      = number(monitor.asymptotic_rate());
+    summary["cycles"]               = std::to_string(monitor.cycles());
+    summary["rate_per_cycle"]       = number(monitor.rate_per_cycle());
+    summary["kkt_residual"]         = number(qp.kkt_residual(solution).max());
+    summary["max_violation"]        = number(qp.max_violation(solution));
+    summary["active"]               = std::to_string(qp.n_active(solution));
+    summary["energy_increases"]     = std::to_string(monitor.energy_increases());
+    summary["feasibility_dampings"] = std::to_string(monitor.feasibility_dampings());
+    summary["h_ratio_coarse"]       = number(discretization.coarse_mesh_ratio());
+
+    const SolverStatistics statistics = solver.statistics();
+    const auto &           mg         = statistics.multilevel;
+    if (!mg)
+      return;
+    std::vector<std::string> colors;
+    for (const unsigned int c : mg->patch_colors)
+      colors.push_back(std::to_string(c));
+    summary["patch_colors"] = json_array(colors);
+    // where the cycles' time goes: visits and wall time of every level
+    // without the coarser levels it visits
+    std::vector<std::string> dofs, visits, seconds;
+    for (unsigned int l = 0; l < mg->level_times.size(); ++l)
+      {
+        dofs.push_back(std::to_string(discretization.level(l).n_dofs));
+        visits.push_back(std::to_string(mg->level_times[l].calls));
+        seconds.push_back(number(mg->level_times[l].seconds));
+      }
+    summary["level_dofs"]   = json_array(dofs);
+    summary["level_visits"] = json_array(visits);
+    summary["level_time_s"] = json_array(seconds);
+    if (parameters.solver.check_coarse_defects)
+      {
+        summary["coarse_defect_checks"]     = std::to_string(mg->coarse_defect_checks);
+        summary["coarse_defect_difference"] = number(mg->coarse_defect_difference);
+      }
+  }
+
+
+  template <int dim>
+  FunctionalValue
+  RunSummary<dim>::add_solution(Summary &                   summary,
+                                  const Postprocessor<dim> & post,
+                                  const LevelVector &        cartesian,
+                                  const Tensor<1, dim> &     force,
+                                  const ErrorIndicators<dim> &indicators) const
+  {
+    // J in the scene's units (Scaling::functional())
+    const FunctionalValue J_hat  = qp.parts(solution);
+    const double          J_unit = scene.scaling().functional(dim);
+    FunctionalValue       J      = J_hat;
+    J.total *= J_unit;
+    J.eq *= J_unit;
+    J.constitutive *= J_unit;
+    J.complementarity *= J_unit;
+    summary["functional"]               = number(J.total);
+    summary["functional_eq"]            = number(J.eq);
+    summary["functional_const"]         = number(J.constitutive);
+    summary["functional_compl"]         = number(J.complementarity);
+    summary["functional_dimensionless"] = number(J_hat.total);
+    summary["scaling"] = "{\"length\": " + number(scene.scaling().length) +
+                         ", \"stress\": " + number(scene.scaling().stress) + "}";
+    const auto &m      = parameters.material;
+    summary["material"] = "{\"mu\": " + number(m.mu) + ", \"lambda\": " +
+                          (std::isinf(m.lambda) ? std::string("\"inf\"") : number(m.lambda)) +
+                          ", \"E\": " + number(m.youngs_modulus) +
+                          ", \"nu\": " + number(m.poisson_ratio) + "}";
+    std::vector<std::string> f;
+    for (unsigned int d = 0; d < dim; ++d)
+      f.push_back(number(force[d]));
+    summary["contact_force"] = json_array(f);
+    // the error indicators: the cellwise parts of J (their sum)
+    summary["error_indicators"] =
+      "{\"sum\": " + number(J_unit * indicators.total()) +
+      ", \"max\": " + number(std::sqrt(J_unit * indicators.max_squared())) +
+      ", \"cells\": " + std::to_string(discretization.get_triangulation().n_global_active_cells()) +
+      ", \"cells_for_half_of_J\": " + std::to_string(indicators.cells_for_half()) + "}";
+    const FieldMaxima maxima    = post.field_maxima(cartesian);
+    summary["max_displacement"] = number(maxima.displacement);
+    summary["max_von_mises"]    = number(maxima.von_mises);
+    return J;
+  }
+
+
+  template <int dim>
+  void
+  RunSummary<dim>::add_hertz_comparison(Summary &                 summary,
+                                        const Postprocessor<dim> &post,
+                                        const Tensor<1, dim> &    force) const
+  {
+    // (the contact table is gathered on the first process)
+    const auto rows = ContactTable<dim>(discretization).rows(solution);
+    Point<dim> contact_point;
+    for (unsigned int d = 0; d < dim; ++d)
+      contact_point[d] = parameters.hertz.contact_point[d] / scene.scaling().length;
+    HertzComparison<dim> hertz(parameters.hertz,
+                               parameters.material,
+                               scene.obstacle_normal(contact_point));
+    hertz.evaluate(force, rows);
+    summary["hertz"] = hertz.json();
+    pcout << hertz.report() << std::endl;
+  }
+
+
+  template <int dim>
+  void
+  RunSummary<dim>::add_errors(Summary &                 summary,
+                              const Postprocessor<dim> &post,
+                              const LevelVector &       cartesian) const
+  {
+    const ErrorNorms e = post.errors(cartesian);
+    AssertThrow(std::isfinite(e.u_l2) && std::isfinite(e.u_h1_semi),
+                ExcMessage("parameter 'Data/Exact displacement' is not finite (NaN or Inf) "
+                           "somewhere on the mesh: its error norms are not finite"));
+    AssertThrow(std::isfinite(e.sigma_l2) && std::isfinite(e.sigma_div),
+                ExcMessage("parameter 'Data/Exact stress' is not finite (NaN or Inf) "
+                           "somewhere on the mesh: its error norms are not finite"));
+    summary["error_u_l2"]       = number(e.u_l2);
+    summary["error_u_h1"]       = number(e.u_h1());
+    summary["error_sigma_l2"]   = number(e.sigma_l2);
+    summary["error_sigma_hdiv"] = number(e.sigma_hdiv());
+    pcout << "Errors: |u - u_h|_H1 = " << std::scientific << std::setprecision(4) << e.u_h1()
+          << ", |sigma - sigma_h|_Hdiv = " << e.sigma_hdiv() << std::defaultfloat << std::endl;
+  }
+
+
+  template class RunSummary<2>;
+  template class RunSummary<3>;
+} // namespace FoslsContact

@@ -1,0 +1,41 @@
+#include <fosls_contact/qp/accurate_sums.h>
+
+#include <array>
+
+namespace FoslsContact
+{
+  double
+  accurate_quadratic(const SparseMatrix<double> &M,
+                     const LevelVector &         x,
+                     const LevelVector &         b,
+                     const double                c)
+  {
+    update_ghosts(x);
+    const auto partial = sum_over_row_blocks<CompensatedSum>(
+      x.locally_owned_size(), [&](CompensatedSum &sum, const unsigned int i) {
+        // (M x)_i in twice the precision, times x_i / 2
+        const double   xi = x.local_element(i);
+        CompensatedSum row;
+        for (auto e = M.begin(i); e != M.end(i); ++e)
+          row.add_product(e->value(), x.local_element(e->column()));
+        sum.add_product(0.5 * xi, row.sum);
+        sum.add(0.5 * xi * row.error);
+        sum.add_product(-b.local_element(i), xi);
+      });
+    CompensatedSum local;
+    for (const auto &p : partial)
+      local.add(p);
+    // the processes' sums, added in the order of the ranks (the same on
+    // every process)
+    const auto all = gather_all(x.get_mpi_communicator(),
+                                std::array<double, 2>{{local.sum, local.error}});
+    CompensatedSum total;
+    for (const auto &[sum, error] : all)
+      {
+        total.add(sum);
+        total.error += error;
+      }
+    total.add(c);
+    return total.value();
+  }
+} // namespace FoslsContact

@@ -1,0 +1,91 @@
+#include <deal.II/base/parallel.h>
+
+#include <fosls_contact/qp/sparse_round_off.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace FoslsContact
+{
+  LevelVector
+  diagonal(const SparseMatrix<double> &                                matrix,
+           const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner)
+  {
+    LevelVector d(partitioner);
+    for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+      d.local_element(i) = matrix.diag_element(i);
+    update_ghosts(d);
+    return d;
+  }
+
+
+  void
+  zero_round_off(SparseMatrix<double> &                                     matrix,
+                 const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+                 const double                                               drop)
+  {
+    // The rule treats a_ij and a_ji alike, so a symmetric pattern stays
+    // symmetric unless one of them is within round-off of the threshold
+    // (measured on A: all entries are below 1e-15 or above 1e-8 of
+    // sqrt(a_ii a_jj); the patch colors do not rely on symmetry).
+    const LevelVector   d = diagonal(matrix, partitioner);
+    std::vector<double> root_diagonal(d.locally_owned_size() + partitioner->n_ghost_indices());
+    for (unsigned int i = 0; i < root_diagonal.size(); ++i)
+      root_diagonal[i] = std::sqrt(std::abs(d.local_element(i)));
+    for_subranges(
+      0u,
+      partitioner->locally_owned_size(),
+      [&](const unsigned int begin, const unsigned int end) {
+        for (auto i = begin; i < end; ++i)
+          for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
+            if (std::abs(e->value()) <= drop * root_diagonal[i] * root_diagonal[e->column()])
+              e->value() = 0.;
+      },
+      500);
+  }
+
+
+  void
+  compress_to_nonzeros(SparseMatrix<double> &matrix, SparsityPattern &sparsity)
+  {
+    Assert(&matrix.get_sparsity_pattern() != &sparsity, ExcInternalError());
+    const auto n    = matrix.m();
+    const auto kept = [](const auto &entry) {
+      return entry.value() != 0. || entry.column() == entry.row();
+    };
+    std::vector<unsigned int> row_lengths(n, 0);
+    for (types::global_dof_index i = 0; i < n; ++i)
+      row_lengths[i] = std::count_if(matrix.begin(i), matrix.end(i), kept);
+    sparsity.reinit(n, n, row_lengths);
+    for (types::global_dof_index i = 0; i < n; ++i)
+      for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
+        if (kept(*e))
+          sparsity.add(i, e->column());
+    sparsity.compress();
+
+    // Both patterns store a row as the diagonal and then the other
+    // columns in increasing order, so a new row is a subsequence of the
+    // old one.
+    std::vector<double> values;
+    values.reserve(sparsity.n_nonzero_elements());
+    for (types::global_dof_index i = 0; i < n; ++i)
+      {
+        auto e = matrix.begin(i);
+        for (auto s = sparsity.begin(i); s != sparsity.end(i); ++s)
+          {
+            while (e->column() != s->column())
+              ++e;
+            values.push_back(e->value());
+          }
+      }
+    // clear() first: SparseMatrix::reinit keeps an allocation that is
+    // large enough, which would be that of the full pattern
+    matrix.clear();
+    matrix.reinit(sparsity);
+    std::size_t k = 0;
+    for (types::global_dof_index i = 0; i < n; ++i)
+      for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
+        e->value() = values[k++];
+  }
+} // namespace FoslsContact

@@ -1,0 +1,140 @@
+#include <deal.II/base/geometry_info.h>
+
+#include <fosls_contact/solvers/contact_face_relations.h>
+
+#include <map>
+#include <set>
+
+namespace FoslsContact
+{
+  namespace
+  {
+    /**
+     * The fine DoFs of the children of @p cell (those with DoFs here) that
+     * do not lie on one of its faces other than @p f, sorted. Child c of an
+     * isotropically refined cell touches the parent's face 2d + s iff bit d
+     * of c is s; its vertex v lies on that face iff bit d of v is s too.
+     */
+    template <int dim, typename Iterator>
+    std::vector<types::global_dof_index>
+    inside_dofs(const Iterator &cell, const unsigned int f, const LevelData<dim> &fine)
+    {
+      std::set<types::global_dof_index> inside;
+      auto on_other_face = [&](const unsigned int c, const unsigned int d, const unsigned int s) {
+        return ((c >> d) & 1u) == s && 2 * d + s != f;
+      };
+      for (unsigned int c = 0; c < cell->n_children(); ++c)
+        {
+          const auto child = cell->child(c);
+          if (!Discretization<dim>::is_present(child))
+            continue;
+          for (const unsigned int v : child->vertex_indices())
+            {
+              bool outside = false;
+              for (unsigned int d = 0; d < dim; ++d)
+                outside |= ((v >> d) & 1u) == ((c >> d) & 1u) &&
+                           on_other_face(c, d, (c >> d) & 1u);
+              if (!outside)
+                for (const auto dof : fine.vertex_dofs.at(child->vertex_index(v)))
+                  inside.insert(dof);
+            }
+          for (const unsigned int cf : child->face_indices())
+            if (!on_other_face(c, cf / 2, cf % 2))
+              for (const auto dof : fine.face_dofs.at(child->face(cf)->index()))
+                inside.insert(dof);
+        }
+      return {inside.begin(), inside.end()};
+    }
+  } // namespace
+
+
+  template <int dim>
+  ContactFaceRelations<dim>::ContactFaceRelations(const Discretization<dim> &discretization,
+                                                  const unsigned int         l)
+  {
+    // Contact relations between level l-1 (coarse) and l (fine), for the
+    // coarse contact faces owned here; the entries the rerouting may give
+    // for every coarse contact face with a cell here.
+    const auto &scene       = discretization.get_scene();
+    const auto &dof_handler = discretization.get_dof_handler();
+    const auto &coarse      = discretization.level(l - 1);
+    const auto &fine        = discretization.level(l);
+    auto        on_contact  = [&](const auto &cell, const unsigned int f) {
+      return cell->at_boundary(f) && scene.is_contact(cell->face(f)->boundary_id());
+    };
+    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l - 1))
+      if (Discretization<dim>::is_present(cell))
+        for (const unsigned int f : cell->face_indices())
+          if (on_contact(cell, f))
+            {
+              const auto j = coarse.face_dofs.at(cell->face(f)->index())[0];
+              for (const auto i : inside_dofs(cell, f, fine))
+                rerouting.emplace_back(i, j);
+            }
+    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l - 1))
+      if (cell->is_locally_owned_on_level())
+        for (const unsigned int f : cell->face_indices())
+          if (on_contact(cell, f))
+            faces.push_back(face_relation(cell, f, coarse, fine));
+  }
+
+
+  template <int dim>
+  template <typename Iterator>
+  FaceRelation
+  ContactFaceRelations<dim>::face_relation(const Iterator &      cell,
+                                           const unsigned int    f,
+                                           const LevelData<dim> &coarse,
+                                           const LevelData<dim> &fine) const
+  {
+    auto fine_normal_dof = [&](const unsigned int vertex) {
+      return fine.vertex_dofs.at(vertex)[0];
+    };
+    auto coarse_normal_dof = [&](const unsigned int vertex) {
+      const auto dof = coarse.vertex_dofs.at(vertex)[0];
+      return coarse.role[dof] == DoFRole::bounded ? dof : numbers::invalid_dof_index;
+    };
+    const auto   face = cell->face(f);
+    FaceRelation frel;
+    frel.coarse_dof = coarse.face_dofs.at(face->index())[0];
+    for (unsigned int c = 0; c < face->n_children(); ++c)
+      frel.sons.push_back(fine.face_dofs.at(face->child(c)->index())[0]);
+    // (all children of an owned cell are here)
+    frel.inside = inside_dofs(cell, f, fine);
+
+    // coarse contact edges of this face (the face itself in 2D)
+    std::vector<std::array<unsigned int, 3>> edges; // a, b, midpoint
+    if (dim == 2)
+      edges.push_back(
+        {{face->vertex_index(0), face->vertex_index(1), face->child(0)->vertex_index(1)}});
+    else
+      {
+        for (unsigned int e = 0; e < GeometryInfo<dim>::lines_per_face; ++e)
+          {
+            const auto line = face->line(e);
+            edges.push_back(
+              {{line->vertex_index(0), line->vertex_index(1), line->child(0)->vertex_index(1)}});
+          }
+        // the face center is the one vertex all sons share
+        std::map<unsigned int, unsigned int> count;
+        for (unsigned int c = 0; c < face->n_children(); ++c)
+          for (const unsigned int v : face->child(c)->vertex_indices())
+            ++count[face->child(c)->vertex_index(v)];
+        for (const auto &[v, k] : count)
+          if (k == face->n_children())
+            frel.fine_center = fine_normal_dof(v);
+        for (const unsigned int v : face->vertex_indices())
+          if (coarse_normal_dof(face->vertex_index(v)) != numbers::invalid_dof_index)
+            frel.coarse_vertices.push_back(coarse_normal_dof(face->vertex_index(v)));
+      }
+    for (const auto &[a, b, m] : edges)
+      frel.edges.push_back({{{coarse_normal_dof(a), coarse_normal_dof(b)}},
+                            {{fine_normal_dof(a), fine_normal_dof(b)}},
+                            fine_normal_dof(m)});
+    return frel;
+  }
+
+
+  template struct ContactFaceRelations<2>;
+  template struct ContactFaceRelations<3>;
+} // namespace FoslsContact

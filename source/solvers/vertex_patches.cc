@@ -1,0 +1,206 @@
+#include <deal.II/base/mpi.h>
+
+#include <fosls_contact/solvers/vertex_patches.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace FoslsContact
+{
+  template <int dim>
+  bool
+  VertexKey<dim>::operator<(const VertexKey &other) const
+  {
+    if (creation_level != other.creation_level)
+      return creation_level < other.creation_level;
+    if (kind != other.kind)
+      return kind < other.kind;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (position[d] != other.position[d])
+        return position[d] < other.position[d];
+    return false;
+  }
+
+
+  template <int dim, typename CellIterator>
+  VertexKey<dim>
+  vertex_key(const CellIterator &cell, const unsigned int v)
+  {
+    VertexKey<dim> key;
+    key.position = cell->vertex(v);
+    // Walk up while the vertex is a vertex of the parent: child c of an
+    // isotropically refined cell has the parent's vertex c as its vertex
+    // c; its vertex v != c lies at the midpoint of the parent along the
+    // axes where the bits of c and v differ.
+    auto         c      = cell;
+    unsigned int vertex = v;
+    while (c->level() > 0)
+      {
+        const auto         parent = c->parent();
+        const unsigned int child  = parent->child_iterator_to_index(c);
+        if (vertex == child)
+          {
+            c = parent;
+            continue;
+          }
+        const unsigned int bits = child ^ vertex;
+        const unsigned int n    = __builtin_popcount(bits);
+        key.creation_level      = c->level();
+        if (n == dim)
+          {
+            key.kind = (dim - 1) * dim + 1; // cell center
+            return key;
+          }
+        // the parent line from vertex `child` along the one bit, or (3D)
+        // the normal of the parent face through `child` spanned by the two
+        // bits, as the cross product of its diagonals: the same vectors,
+        // up to sign, from every cell that shares the line or face
+        Tensor<1, dim> direction;
+        if (n == 1)
+          direction = parent->vertex(child ^ bits) - parent->vertex(child);
+        else
+          {
+            const unsigned int b1 = bits & (~bits + 1), b2 = bits ^ b1;
+            Tensor<1, 3>       d1, d2;
+            const auto         p1 = parent->vertex(child ^ bits) - parent->vertex(child);
+            const auto         p2 = parent->vertex(child ^ b1) - parent->vertex(child ^ b2);
+            for (unsigned int d = 0; d < dim; ++d)
+              d1[d] = p1[d], d2[d] = p2[d];
+            const Tensor<1, 3> normal = cross_product_3d(d1, d2);
+            for (unsigned int d = 0; d < dim; ++d)
+              direction[d] = normal[d];
+          }
+        unsigned int axis = 0;
+        for (unsigned int d = 1; d < dim; ++d)
+          if (std::abs(direction[d]) > std::abs(direction[axis]))
+            axis = d;
+        key.kind = (n - 1) * dim + 1 + axis;
+        return key;
+      }
+    return key; // a vertex of the coarse mesh
+  }
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  VertexPatches<dim>::level_schedule(
+    const std::vector<std::vector<unsigned int>> &           coupled,
+    const std::vector<types::global_dof_index> &             color_dof,
+    const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner)
+  {
+    // the color of item p travels in the local DoF color_dof[p] (-1: not
+    // known yet); its owner decides it once the colors of all earlier items
+    // coupled with it are known
+    const unsigned int n_owned = partitioner->locally_owned_size();
+    LevelVector        color(partitioner);
+    color = -1.;
+    for (;;)
+      {
+        update_ghosts(color);
+        unsigned int pending = 0;
+        for (unsigned int p = 0; p < coupled.size(); ++p)
+          if (color_dof[p] < n_owned && color.local_element(color_dof[p]) < 0)
+            {
+              double c     = 0;
+              bool   known = true;
+              for (const unsigned int q : coupled[p])
+                if (q < p)
+                  {
+                    const double cq = color.local_element(color_dof[q]);
+                    known &= cq >= 0;
+                    c = std::max(c, cq + 1);
+                  }
+              if (known)
+                color.local_element(color_dof[p]) = c;
+              else
+                ++pending;
+            }
+        if (Utilities::MPI::sum(pending, partitioner->get_mpi_communicator()) == 0)
+          break;
+      }
+    update_ghosts(color);
+    std::vector<unsigned int> result(coupled.size());
+    for (unsigned int p = 0; p < coupled.size(); ++p)
+      result[p] = static_cast<unsigned int>(color.local_element(color_dof[p]));
+    return result;
+  }
+
+
+  template <int dim>
+  VertexPatches<dim>::VertexPatches(const Discretization<dim> &discretization, const unsigned int l)
+  {
+    // Vertex patches in the order of their VertexKey, and their colors. A
+    // process relaxes the patches with a DoF it owns; their vertices are
+    // vertices of its own cells, whose cells are all here.
+    const auto &dof_handler = discretization.get_dof_handler();
+    const auto &data        = discretization.level(l);
+    std::map<unsigned int, VertexKey<dim>>                     key;
+    std::map<unsigned int, std::set<types::global_dof_index>> patch;
+    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
+      if (Discretization<dim>::is_present(cell))
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const unsigned int vertex = cell->vertex_index(v);
+            if (key.count(vertex) == 0)
+              key[vertex] = vertex_key<dim>(cell, v);
+            if (data.owned_cell_vertices.count(vertex) == 0)
+              continue;
+            auto &p = patch[vertex];
+            for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) { p.insert(dof); });
+          }
+
+    // every vertex of a cell here is an item of the level scheduling
+    std::vector<std::pair<VertexKey<dim>, unsigned int>> order;
+    for (const auto &[vertex, k] : key)
+      order.emplace_back(k, vertex);
+    std::sort(order.begin(), order.end(), [](const auto &a, const auto &b) {
+      return a.first < b.first;
+    });
+    std::map<unsigned int, unsigned int> position;
+    std::vector<types::global_dof_index> color_dof;
+    for (const auto &[k, vertex] : order)
+      {
+        position[vertex] = color_dof.size();
+        color_dof.push_back(data.vertex_dofs.at(vertex)[0]);
+      }
+    // patches are coupled if their vertices share a cell
+    std::vector<std::vector<unsigned int>> coupled(order.size());
+    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
+      if (Discretization<dim>::is_present(cell))
+        for (const unsigned int v : cell->vertex_indices())
+          for (const unsigned int w : cell->vertex_indices())
+            if (v != w)
+              coupled[position[cell->vertex_index(v)]].push_back(
+                position[cell->vertex_index(w)]);
+    const std::vector<unsigned int> color =
+      level_schedule(coupled, color_dof, data.partitioner);
+
+    for (const auto &[k, vertex] : order)
+      {
+        const auto it = patch.find(vertex);
+        if (it == patch.end())
+          continue;
+        std::vector<types::global_dof_index> dofs(it->second.begin(), it->second.end());
+        if (std::none_of(dofs.begin(), dofs.end(), [&](const auto dof) {
+              return dof < data.n_owned();
+            }))
+          continue;
+        // the patch's DoFs in global order, so that every process that
+        // relaxes it computes the same numbers in the same order
+        std::sort(dofs.begin(), dofs.end(), [&](const auto a, const auto b) {
+          return data.global(a) < data.global(b);
+        });
+        patches.push_back(dofs);
+        colors.push_back(color[position[vertex]]);
+        n_colors = std::max(n_colors, color[position[vertex]] + 1);
+      }
+    n_colors = Utilities::MPI::max(n_colors, discretization.get_communicator());
+  }
+
+
+  template struct VertexKey<2>;
+  template struct VertexKey<3>;
+  template struct VertexPatches<2>;
+  template struct VertexPatches<3>;
+} // namespace FoslsContact

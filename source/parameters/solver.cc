@@ -85,6 +85,15 @@ namespace FoslsContact
                         "preconditioned by the linear truncated cycle on the "
                         "current inactive set, a projected line search that "
                         "never increases J, and projected post-smoothing.");
+      prm.declare_entry("Linear cycle",
+                        "own",
+                        Patterns::Selection("own|deal.II"),
+                        "The linear truncated cycle that preconditions the Newton "
+                        "step's CG (Krylov steps > 0): own (MonotoneCycle) or "
+                        "deal.II (the same cycle run by deal.II's Multigrid with "
+                        "the patch smoother, the truncated sign-correct transfer, "
+                        "the Galerkin operators and the exact coarse solve as its "
+                        "parts). The iterates are the same up to round-off.");
       prm.declare_entry("Threads",
                         std::to_string(defaults.threads),
                         Patterns::Integer(0, 1024),
@@ -153,6 +162,7 @@ namespace FoslsContact
                                                  InitialGuess::expression);
       definiteness_max_dofs = prm.get_integer("Definiteness check max dofs");
       krylov_steps          = prm.get_integer("Krylov steps");
+      linear_cycle = prm.get("Linear cycle") == "own" ? LinearCycle::own : LinearCycle::dealii;
       threads               = prm.get_integer("Threads");
       check_coarse_defects  = prm.get_bool("Check coarse defects");
       prm.leave_subsection();

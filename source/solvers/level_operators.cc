@@ -200,9 +200,9 @@ namespace FoslsContact
   void
   LevelOperators<dim>::restrict_and_add(const unsigned int l,
                                         LevelVector &      dst,
-                                        const LevelVector &src) const
+                                        const LevelVector &src,
+                                        LevelVector &      restricted) const
   {
-    LevelVector restricted(dst.get_partitioner());
     product[l].Tvmult(restricted, src);
     dst += restricted;
   }

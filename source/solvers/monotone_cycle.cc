@@ -171,6 +171,50 @@ namespace FoslsContact
 
 
   template <int dim>
+  bool
+  MonotoneCycle<dim>::update_operator(const unsigned int          l,
+                                      const SparseMatrix<double> &A,
+                                      const std::vector<DoFRole> &role,
+                                      const bool                  linear)
+  {
+    const auto reroute = !linear;
+    const bool rebuilt = operators.needs_update(l, scratch[l].truncated, reroute);
+    if (rebuilt)
+      {
+        const ScopedTime timing(counters.operators);
+        operators.update(l, A, role, scratch[l].truncated, reroute);
+        // (not for a level the cycle solves exactly, which it does not
+        // smooth)
+        if (!solved_exactly(l - 1, linear))
+          initialize_smoother(l - 1, operators.galerkin(l - 1), hierarchy.level(l - 1).role);
+      }
+    return rebuilt;
+  }
+
+
+  template <int dim>
+  void
+  MonotoneCycle<dim>::update_linear_operators(const SparseMatrix<double> &A,
+                                              const std::vector<DoFRole> &role)
+  {
+    // The obstacles of the linear cycle are +inf on every level (the
+    // defect obstacle of a DoF that is not truncated is inf - v), so no
+    // bounded DoF is ever active: the truncation is the part that does not
+    // depend on the iterate, the same in every visit.
+    const SparseMatrix<double> *level_matrix = &A;
+    const std::vector<DoFRole> *level_role   = &role;
+    for (unsigned int l = finest; l > linear_coarsest_level; --l)
+      {
+        prepare(l, *level_matrix, *level_role);
+        scratch[l].truncated = scratch[l].fixed_truncated;
+        update_operator(l, *level_matrix, *level_role, true);
+        level_matrix = &operators.galerkin(l - 1);
+        level_role   = &hierarchy.level(l - 1).role;
+      }
+  }
+
+
+  template <int dim>
   void
   MonotoneCycle<dim>::coarse_correction(const unsigned int              l,
                                         const SparseMatrix<double> &    A,
@@ -189,17 +233,7 @@ namespace FoslsContact
       update_ghosts(v);
     truncate(l, ub, v);
     Scratch &  work    = scratch[l];
-    const auto reroute = !linear;
-    const bool rebuilt = operators.needs_update(l, work.truncated, reroute);
-    if (rebuilt)
-      {
-        const ScopedTime timing(counters.operators);
-        operators.update(l, A, role, work.truncated, reroute);
-        // (not for a level the cycle solves exactly, which it does not
-        // smooth)
-        if (!solved_exactly(l - 1, linear))
-          initialize_smoother(l - 1, operators.galerkin(l - 1), hierarchy.level(l - 1).role);
-      }
+    const bool rebuilt = update_operator(l, A, role, linear);
 
     if (visit == 0 || rebuilt)
       operators.restrict_defect(l, A, r, v, work.residual, work.r_coarse);

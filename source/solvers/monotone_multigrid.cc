@@ -19,7 +19,21 @@ namespace FoslsContact
     , operators(hierarchy, fine_sparsity, rerouting)
     , coarse_solver(&counters.coarse_solve)
     , cycle(hierarchy, this->parameters, pre_smoother, post_smoother, operators, coarse_solver, counters)
-    , newton_step(this->parameters, pre_smoother, post_smoother, cycle, counters, finest_level)
+    , linear_multigrid(hierarchy,
+                       this->parameters,
+                       pre_smoother,
+                       post_smoother,
+                       cycle,
+                       operators,
+                       coarse_solver,
+                       counters)
+    , newton_step(this->parameters,
+                  pre_smoother,
+                  post_smoother,
+                  cycle,
+                  linear_multigrid,
+                  counters,
+                  finest_level)
   {
     counters.level_visits.resize(finest + 1);
   }

@@ -55,6 +55,16 @@ namespace FoslsContact
         F,
       };
 
+      /**
+       * The Newton step's linear truncated cycle: the own MonotoneCycle,
+       * or the same cycle run by deal.II's Multigrid (LinearMultigrid).
+       */
+      enum class LinearCycle
+      {
+        own,
+        dealii,
+      };
+
       Type         type                = Type::monotone_multigrid;
       double       tolerance           = 1e-8;
       unsigned int max_iterations      = 200;
@@ -67,6 +77,7 @@ namespace FoslsContact
       InitialGuess initial_guess       = InitialGuess::coarse_solution;
       unsigned int definiteness_max_dofs = 20000;
       unsigned int krylov_steps          = 50;
+      LinearCycle  linear_cycle          = LinearCycle::own;
       /** 0: as many threads as cores (or DEAL_II_NUM_THREADS). */
       unsigned int threads               = 0;
       /**

@@ -117,9 +117,13 @@ namespace FoslsContact
                          LevelVector &               r_coarse) const;
     /**
      * dst += P~^T src for the last P~ of level @p l (owned entries of
-     * @p dst; @p src: the owned entries are read). Collective.
+     * @p dst; @p src: the owned entries are read), with @p restricted, a
+     * vector of level l - 1, as work space. Collective.
      */
-    void restrict_and_add(const unsigned int l, LevelVector &dst, const LevelVector &src) const;
+    void restrict_and_add(const unsigned int l,
+                          LevelVector &      dst,
+                          const LevelVector &src,
+                          LevelVector &      restricted) const;
 
     /**
      * The difference of @p r_coarse to P~^T (r - A v) recomputed, relative

@@ -86,6 +86,16 @@ namespace FoslsContact
                              const std::vector<DoFRole> &role);
 
     /**
+     * Bring the truncated prolongations and Galerkin operators of the
+     * linear cycle for the finest level's operator @p A and the linear
+     * roles @p role up to date on every level it smooths, with their patch
+     * smoothers: what its visits do before their coarse corrections, for a
+     * cycle that is run by deal.II's Multigrid (LinearMultigrid).
+     * Collective.
+     */
+    void update_linear_operators(const SparseMatrix<double> &A, const std::vector<DoFRole> &role);
+
+    /**
      * The linear cycle's coarsest level: the finest level below the
      * finest with at most linear_coarse_max_dofs DoFs (0 if none).
      */
@@ -169,6 +179,15 @@ namespace FoslsContact
      * valid: the ghost DoFs get the same decision as at their owners.)
      */
     void truncate(const unsigned int l, const LevelVector &ub, const LevelVector &v);
+    /**
+     * Rebuild the operator of level l - 1 (and its patch smoother) for the
+     * truncation of level @p l in its scratch, if it changed; returns
+     * whether it did. Collective.
+     */
+    bool update_operator(const unsigned int          l,
+                         const SparseMatrix<double> &A,
+                         const std::vector<DoFRole> &role,
+                         const bool                  linear);
     /**
      * Visit @p visit of level l - 1 from level @p l: the truncated
      * operators, the coarse defect and obstacle, the coarse cycle and the

@@ -11,12 +11,6 @@
 
 namespace FoslsContact
 {
-  namespace
-  {
-    const auto number = json_number;
-  } // namespace
-
-
   template <int dim>
   ProblemChecks<dim>::ProblemChecks(const Parameters::AllParameters &parameters,
                                     const Scene<dim> &               scene,
@@ -146,7 +140,7 @@ namespace FoslsContact
         free_modes += (free_modes.empty() ? "" : " + ") + names[m];
     AssertThrow(false,
                 ExcMessage("the boundary conditions leave a rigid motion free (" + free_modes +
-                           ", relative energy " + number(energy) +
+                           ", relative energy " + json_number(energy) +
                            "): the functional's quadratic form does not change along it "
                            "and its matrix is singular, which contact, one-sided, does not "
                            "cure; prescribe the motion on some boundary ('Boundary "
@@ -208,7 +202,7 @@ namespace FoslsContact
                 ExcMessage("the functional is indefinite for " + weights.str() +
                            " (smallest relative eigenvalue of the contact "
                            "Schur complement " +
-                           number(result.min_relative_eigenvalue) +
+                           json_number(result.min_relative_eigenvalue) +
                            " on level " + std::to_string(level + 1) +
                            "): decrease 'Functional weights/C_compl' or "
                            "increase C_eq/C_const (paper eq. 10)"));

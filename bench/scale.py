@@ -95,6 +95,23 @@ def finest(results, tag):
     return (max(ran), results[(tag, max(ran))]["this"]) if ran else (None, None)
 
 
+def square_force(results):
+    """The square's contact force against its limit, extrapolated from levels
+    7-9 (whose differences shrink by a steady factor): the limit, that
+    factor, the relative error of every level and the first level within
+    1.5e-5 (None if none); None without levels 7-9."""
+    forces = {level: results[("square", level)]["this"]["contact_force"][1]
+              for level in range(5, 10) if results.get(("square", level))}
+    if not all(level in forces for level in (7, 8, 9)):
+        return None
+    q = (forces[9] - forces[8]) / (forces[8] - forces[7])
+    limit = forces[9] + (forces[9] - forces[8]) * q / (1 - q)
+    errors = {level: abs(f - limit) / abs(limit) for level, f in forces.items()}
+    within = [level for level in sorted(errors) if errors[level] <= 1.5e-5]
+    return {"limit": limit, "ratio": q, "errors": errors,
+            "within": within[0] if within else None}
+
+
 def targets(results):
     """The targets of the issue on whole runs, each with its measured figure
     and whether it is met."""
@@ -122,16 +139,12 @@ def targets(results):
     row("the cube at level 7 in under 20 GB",
         f"{best['this']['peak_rss_mb'] / 1024:.1f} GB, {best['this']['dofs']} DoFs" if best
         else "not run", bool(best) and best["this"]["peak_rss_mb"] < 20 * 1024)
-    forces = {level: results[("square", level)]["this"]
-              for level in range(5, 10) if results.get(("square", level))}
-    if all(level in forces for level in (7, 8, 9)):
-        f = {level: s["contact_force"][1] for level, s in forces.items()}
-        q = (f[9] - f[8]) / (f[8] - f[7])
-        limit = f[9] + (f[9] - f[8]) * q / (1 - q)
-        within = [level for level in sorted(f) if abs(f[level] - limit) <= 1.5e-5 * abs(limit)]
-        wall = forces[within[0]]["wall_s"] if within else None
+    force = square_force(results)
+    if force:
+        within = force["within"]
+        wall = results[("square", within)]["this"]["wall_s"] if within else None
         row("the square's contact force to 1.5e-5 in <= 3.5 s wall",
-            f"level {within[0]}, {wall:.2f} s" if within else "no level within 1.5e-5",
+            f"level {within}, {wall:.2f} s" if within else "no level within 1.5e-5",
             bool(within) and wall <= 3.5)
     if not rows:
         return []
@@ -216,21 +229,16 @@ def main():
     lines.append("")
 
     # the square's force against its limit
-    forces = {level: results[("square", level)]["this"]["contact_force"][1]
-              for level in range(5, 10) if results.get(("square", level))}
-    if all(level in forces for level in (7, 8, 9)):
-        d8, d9 = forces[8] - forces[7], forces[9] - forces[8]
-        q = d9 / d8
-        limit = forces[9] + d9 * q / (1 - q)
-        lines.append(f"The square's contact force: limit {limit:.8g} (extrapolated from "
-                     f"levels 7-9, ratio of differences {q:.2f}); relative error by level: " +
-                     ", ".join(f"{level} {abs(f - limit) / abs(limit):.1e}"
-                               for level, f in sorted(forces.items())) + ".")
-        within = [level for level, f in sorted(forces.items())
-                  if abs(f - limit) / abs(limit) <= 1.5e-5]
-        if within:
-            s = results[("square", within[0])]["this"]
-            lines.append(f" The first level within 1.5e-5: {within[0]}, "
+    force = square_force(results)
+    if force:
+        lines.append(f"The square's contact force: limit {force['limit']:.8g} (extrapolated "
+                     f"from levels 7-9, ratio of differences {force['ratio']:.2f}); relative "
+                     "error by level: " +
+                     ", ".join(f"{level} {error:.1e}"
+                               for level, error in sorted(force["errors"].items())) + ".")
+        if force["within"]:
+            s = results[("square", force["within"])]["this"]
+            lines.append(f" The first level within 1.5e-5: {force['within']}, "
                          f"{s['wall_s']:.2f} s wall.\n")
         else:
             lines.append(" No level is within 1.5e-5.\n")

@@ -1,9 +1,10 @@
 # The 3D mesh file of prm/quarter_ball_file.prm refined to 4 levels: its
 # cells differ in size by a factor 15, and the vertex patch matrices of the
-# smoother have condition numbers up to 1e11. The patch inverses come from
-# Cholesky factors (invert_spd), which keeps them positive definite; an
-# inverse by elimination was indefinite there, and the first cycle raised
-# J from 3e-6 to 1e31.
+# smoother are badly conditioned (tests/unit/spd_inverse: condition number
+# 1.3e9 scaled to a unit diagonal). The patch inverses come from Cholesky
+# factors (invert_spd), which keeps them positive definite; an inverse by
+# elimination was indefinite there, and the first cycle raised J by orders
+# of magnitude (the run ended as diverged).
 #  - the default solver (Newton-accelerated cycle): converges, J never
 #    increases, every iterate feasible, and the Hertz pressure error is
 #    below the 3-level run's (0.132);

@@ -2,8 +2,8 @@
 // cells differ much in size: tests/unit/spd_inverse.patch is the matrix of
 // a 19-DoF vertex patch on the finest level of prm/quarter_ball_file.prm
 // refined to 4 levels (3D, cells differing in size by a factor 15),
-// written with 17 digits. Its diagonal spans 4e-3 to 4e10; scaled to a
-// unit diagonal its condition number is 1.3e9.
+// written with 17 digits. Printed: its diagonal spans 4e-3 to 4e10, and
+// scaled to a unit diagonal its condition number is 1.3e9.
 //  - the inverse is exactly symmetric (both triangles are filled: the
 //    smoother reads the upper one, BoxQP all of it);
 //  - it is positive definite: scaled by diag(M)^(1/2) on both sides its
@@ -37,6 +37,28 @@ main()
   for (unsigned int a = 0; a < n; ++a)
     for (unsigned int b = 0; b < n; ++b)
       M(a, b) = values[a * n + b];
+
+  // the figures doc/method.md quotes: the span of the diagonal and the
+  // condition number of M scaled to a unit diagonal
+  double                   smallest_diagonal = M(0, 0), largest_diagonal = M(0, 0);
+  LAPACKFullMatrix<double> scaled(n, n);
+  for (unsigned int a = 0; a < n; ++a)
+    {
+      smallest_diagonal = std::min(smallest_diagonal, M(a, a));
+      largest_diagonal  = std::max(largest_diagonal, M(a, a));
+      for (unsigned int b = 0; b < n; ++b)
+        scaled(a, b) = M(a, b) / std::sqrt(M(a, a) * M(b, b));
+    }
+  scaled.compute_eigenvalues();
+  double scaled_min = std::numeric_limits<double>::infinity(), scaled_max = 0;
+  for (unsigned int a = 0; a < n; ++a)
+    {
+      scaled_min = std::min(scaled_min, scaled.eigenvalue(a).real());
+      scaled_max = std::max(scaled_max, scaled.eigenvalue(a).real());
+    }
+  std::cout << "diagonal from " << rounded(smallest_diagonal, 1) << " to "
+            << rounded(largest_diagonal, 1) << ", condition number scaled to a unit diagonal "
+            << rounded(scaled_max / scaled_min, 2) << std::endl;
 
   FullMatrix<double> X = M;
   invert_spd(X);

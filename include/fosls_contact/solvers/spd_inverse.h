@@ -19,12 +19,13 @@ namespace FoslsContact
    * C_eq h^{-d}, while the strain term of a Q1 displacement function
    * shrinks like h^{d-2}. On the quarter ball of prm/quarter_ball_file.prm
    * (3D, cells differing in size by a factor 15) refined to four levels,
-   * the patch matrices have condition numbers up to 1e11 (1e9 scaled to a
-   * unit diagonal). An inverse formed by elimination has errors of about
-   * eps times the condition number times |M^{-1}|, larger there than the
-   * smallest eigenvalue of M^{-1}: it was indefinite, g^T M^{-1} g < 0 for
-   * some patch defects g, the patch steps raised J, and the first cycle
-   * took J from 3e-6 to 1e31. The product of the triangular inverses is a
+   * a patch matrix's diagonal spans 4e-3 to 4e10 and its condition number
+   * scaled to a unit diagonal is 1.3e9 (tests/unit/spd_inverse). An
+   * inverse formed by elimination has errors of about eps times the
+   * condition number times |M^{-1}|, larger there than the smallest
+   * eigenvalue of M^{-1}: it was indefinite, g^T M^{-1} g < 0 for some
+   * patch defects g, and the patch steps raised J until the cycle
+   * diverged. The product of the triangular inverses is a
    * Gram matrix whose rounding errors are relative to |M^{-1}| itself, so
    * it stays positive definite while eps times the condition number is
    * below 1, and every patch step lowers J (tests/solver/ill_conditioned_patches).

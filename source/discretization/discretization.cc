@@ -37,6 +37,10 @@ namespace FoslsContact
       scene.make_coarse_mesh(coarse);
       coarse_ratio = Scene<dim>::mesh_size_ratio(coarse);
       triangulation.copy_triangulation(coarse);
+      // copy_triangulation() takes the coarse mesh's smoothing as well, and
+      // multigrid DoFs need this one (a debug build of deal.II checks it in
+      // distribute_mg_dofs())
+      triangulation.set_mesh_smoothing(Triangulation<dim>::limit_level_difference_at_vertices);
     }
     triangulation.refine_global(n_levels - 1);
     scene.check_cell_shapes(triangulation, comm);

@@ -7,6 +7,54 @@ namespace FoslsContact
 {
   namespace Parameters
   {
+    namespace
+    {
+      /**
+       * The entries of the subsection that change how a run is carried out
+       * or checked, not what it computes: threads, diagnostics and the
+       * definiteness check.
+       */
+      void
+      declare_run_parameters(ParameterHandler &prm, const Solver &defaults)
+      {
+        prm.declare_entry("Threads",
+                          std::to_string(defaults.threads),
+                          Patterns::Integer(0, 1024),
+                          "Threads per process for the patch smoother (patches of "
+                          "one color are relaxed concurrently), the assembly and "
+                          "deal.II's vector and matrix operations. 0: as many as "
+                          "the machine has cores (or the environment variable "
+                          "DEAL_II_NUM_THREADS says). The smoother's iterates do "
+                          "not depend on the number of threads; deal.II's sums "
+                          "(dot products in the Newton step's CG) are split by "
+                          "thread count, so other results can differ in the last "
+                          "digits (measured: the contact force to 2e-10 relative or "
+                          "better, doc/parallel_results.md).");
+        prm.declare_entry("Check coarse defects",
+                          "false",
+                          Patterns::Bool(),
+                          "A diagnostic of the monotone multigrid for tests: the "
+                          "second visit of a level in a W- or F-cycle takes its coarse "
+                          "defect as r_H - alpha A_H c when the truncation is the first "
+                          "visit's; with true, it is also recomputed as P~^T (r - A v) "
+                          "and the largest difference, relative to |P~^T| (|A| |v| + "
+                          "|r|) (max norms), is written to summary.json as "
+                          "coarse_defect_difference (round-off: at most 1.4e-17 "
+                          "measured), with the number of such visits as "
+                          "coarse_defect_checks. The iterates are the same; the solve "
+                          "time and, on several processes, the communication include "
+                          "the check's products with the level's matrix and P~^T.");
+        prm.declare_entry("Definiteness check max dofs",
+                          std::to_string(defaults.definiteness_max_dofs),
+                          Patterns::Integer(0),
+                          "The definiteness check (paper eq. 10, section 7) forms "
+                          "the Schur complement of the functional onto the contact "
+                          "normal DoFs on the finest level with at most this many "
+                          "DoFs; indefiniteness there implies indefiniteness on "
+                          "every finer level (nested spaces). 0: skip the check.");
+      }
+    } // namespace
+
     void
     Solver::declare_parameters(ParameterHandler &prm)
     {
@@ -94,41 +142,7 @@ namespace FoslsContact
                         "the patch smoother, the truncated sign-correct transfer, "
                         "the Galerkin operators and the exact coarse solve as its "
                         "parts). The iterates are the same up to round-off.");
-      prm.declare_entry("Threads",
-                        std::to_string(defaults.threads),
-                        Patterns::Integer(0, 1024),
-                        "Threads per process for the patch smoother (patches of "
-                        "one color are relaxed concurrently), the assembly and "
-                        "deal.II's vector and matrix operations. 0: as many as "
-                        "the machine has cores (or the environment variable "
-                        "DEAL_II_NUM_THREADS says). The smoother's iterates do "
-                        "not depend on the number of threads; deal.II's sums "
-                        "(dot products in the Newton step's CG) are split by "
-                        "thread count, so other results can differ in the last "
-                        "digits (measured: the contact force to 2e-10 relative or "
-                        "better, doc/parallel_results.md).");
-      prm.declare_entry("Check coarse defects",
-                        "false",
-                        Patterns::Bool(),
-                        "A diagnostic of the monotone multigrid for tests: the "
-                        "second visit of a level in a W- or F-cycle takes its coarse "
-                        "defect as r_H - alpha A_H c when the truncation is the first "
-                        "visit's; with true, it is also recomputed as P~^T (r - A v) "
-                        "and the largest difference, relative to |P~^T| (|A| |v| + "
-                        "|r|) (max norms), is written to summary.json as "
-                        "coarse_defect_difference (round-off: at most 1.4e-17 "
-                        "measured), with the number of such visits as "
-                        "coarse_defect_checks. The iterates are the same; the solve "
-                        "time and, on several processes, the communication include "
-                        "the check's products with the level's matrix and P~^T.");
-      prm.declare_entry("Definiteness check max dofs",
-                        std::to_string(defaults.definiteness_max_dofs),
-                        Patterns::Integer(0),
-                        "The definiteness check (paper eq. 10, section 7) forms "
-                        "the Schur complement of the functional onto the contact "
-                        "normal DoFs on the finest level with at most this many "
-                        "DoFs; indefiniteness there implies indefiniteness on "
-                        "every finer level (nested spaces). 0: skip the check.");
+      declare_run_parameters(prm, defaults);
       prm.leave_subsection();
     }
 

@@ -4,7 +4,6 @@
 #include <fosls_contact/solvers/monotone_cycle.h>
 
 #include <cmath>
-#include <limits>
 
 namespace FoslsContact
 {
@@ -105,68 +104,22 @@ namespace FoslsContact
                               const SparseMatrix<double> &A,
                               const std::vector<DoFRole> &role)
   {
-    const auto &       fine    = hierarchy.level(l);
-    const auto &       coarse  = hierarchy.level(l - 1);
-    const unsigned int n_local = fine.n_local();
-    Scratch &          work    = scratch[l];
+    const auto &fine   = hierarchy.level(l);
+    const auto &coarse = hierarchy.level(l - 1);
+    Scratch &   work   = scratch[l];
     // (set up on the first visit; a process may own no DoF of the level,
     // so the size of the arrays cannot tell whether they are: the vectors'
     // partitioners can, and without them the vectors would live on
     // MPI_COMM_SELF and the coarse solve's collectives would skip this
     // process)
-    if (work.defect.get_partitioner() != fine.partitioner)
+    if (work.residual.get_partitioner() != fine.partitioner)
       {
-        work.truncated.resize(n_local);
-        for (auto *vector : {&work.defect, &work.residual, &work.w})
+        for (auto *vector : {&work.residual, &work.w})
           vector->reinit(fine.partitioner);
         for (auto *vector : {&work.r_coarse, &work.ub_coarse, &work.c, &work.Ac})
           vector->reinit(coarse.partitioner);
       }
-    const auto version = operators.version_of(l, A);
-    if (work.diagonal_version != version)
-      {
-        // (the same on every process: the diagonal has ghost values)
-        work.diagonal = diagonal(A, fine.partitioner);
-        update_ghosts(work.diagonal); // (an assignment copies the owned entries only)
-        work.diagonal_version = version;
-      }
-    if (work.operator_version != version || work.role != role)
-      {
-        // The part of the truncation that does not depend on the iterate:
-        // fixed DoFs, and DoFs whose diagonal is zero, switched off by the
-        // truncation of the finer level. It changes only with the
-        // operator (which changes only with that truncation) or the roles
-        // (those of the Newton step's linear problem), so a visit only
-        // looks at the bounded DoFs.
-        work.fixed_truncated.resize(n_local);
-        work.bounded.clear();
-        for (unsigned int i = 0; i < n_local; ++i)
-          {
-            work.fixed_truncated[i] =
-              role[i] == DoFRole::fixed || work.diagonal.local_element(i) <= 0;
-            if (role[i] == DoFRole::bounded && !work.fixed_truncated[i])
-              work.bounded.push_back(i);
-            work.defect.local_element(i) = std::numeric_limits<double>::infinity();
-          }
-        work.operator_version = version;
-        work.role             = role;
-      }
-  }
-
-
-  template <int dim>
-  void
-  MonotoneCycle<dim>::truncate(const unsigned int l, const LevelVector &ub, const LevelVector &v)
-  {
-    Scratch &work  = scratch[l];
-    work.truncated = work.fixed_truncated;
-    for (const auto i : work.bounded)
-      {
-        const double vi = v.local_element(i), ubi = ub.local_element(i);
-        work.truncated[i] = vi >= ubi; // active
-        work.defect.local_element(i) =
-          work.truncated[i] ? std::numeric_limits<double>::infinity() : ubi - vi;
-      }
+    work.truncation.prepare(fine.partitioner, A, operators.version_of(l, A), role);
   }
 
 
@@ -178,11 +131,12 @@ namespace FoslsContact
                                       const bool                  linear)
   {
     const auto reroute = !linear;
-    const bool rebuilt = operators.needs_update(l, scratch[l].truncated, reroute);
+    const auto &truncated = scratch[l].truncation.truncated();
+    const bool  rebuilt   = operators.needs_update(l, truncated, reroute);
     if (rebuilt)
       {
         const ScopedTime timing(counters.operators);
-        operators.update(l, A, role, scratch[l].truncated, reroute);
+        operators.update(l, A, role, truncated, reroute);
         // (not for a level the cycle solves exactly, which it does not
         // smooth)
         if (!solved_exactly(l - 1, linear))
@@ -206,7 +160,7 @@ namespace FoslsContact
     for (unsigned int l = finest; l > linear_coarsest_level; --l)
       {
         prepare(l, *level_matrix, *level_role);
-        scratch[l].truncated = scratch[l].fixed_truncated;
+        scratch[l].truncation.truncate_fixed_only();
         update_operator(l, *level_matrix, *level_role, true);
         level_matrix = &operators.galerkin(l - 1);
         level_role   = &hierarchy.level(l - 1).role;
@@ -231,8 +185,8 @@ namespace FoslsContact
     // visit)
     if (visit > 0)
       update_ghosts(v);
-    truncate(l, ub, v);
-    Scratch &  work    = scratch[l];
+    Scratch &work = scratch[l];
+    work.truncation.truncate(ub, v);
     const bool rebuilt = update_operator(l, A, role, linear);
 
     if (visit == 0 || rebuilt)
@@ -254,7 +208,7 @@ namespace FoslsContact
     CoarseObstacles::project(parameters.projection,
                              hierarchy.face_relations(l),
                              operators.face_scale(l),
-                             work.defect,
+                             work.truncation.defect_obstacle(),
                              work.ub_coarse);
     work.c = 0;
     // (an F-cycle: an F-cycle on the first visit, a V-cycle on the second)
@@ -280,9 +234,10 @@ namespace FoslsContact
     // (c's ghost values are valid after the coarse cycle)
     vmult(operators.truncated_prolongation(l), work.w, work.c, false);
     // keep the iterate feasible (a no-op when K_H is inside K_h)
-    double alpha = 1.;
-    for (const auto i : work.bounded)
-      if (i < n_owned && !work.truncated[i])
+    const auto &truncated = work.truncation.truncated();
+    double      alpha     = 1.;
+    for (const auto i : work.truncation.bounded())
+      if (i < n_owned && !truncated[i])
         {
           const double wi = work.w.local_element(i), vi = v.local_element(i),
                        ubi = ub.local_element(i);
@@ -303,7 +258,7 @@ namespace FoslsContact
     if (increases_energy(change, std::abs(alpha * wr) + 0.5 * alpha * alpha * std::abs(wAw)))
       ++counters.energy_increases;
     v.add(alpha, work.w);
-    for (const auto i : work.bounded)
+    for (const auto i : work.truncation.bounded())
       if (i < n_owned && v.local_element(i) > ub.local_element(i))
         v.local_element(i) = ub.local_element(i); // round-off of the damped step only
     return alpha;

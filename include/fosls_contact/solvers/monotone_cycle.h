@@ -6,6 +6,7 @@
 #include <fosls_contact/parameters.h>
 #include <fosls_contact/solvers/coarse_solver.h>
 #include <fosls_contact/solvers/level_operators.h>
+#include <fosls_contact/solvers/level_truncation.h>
 #include <fosls_contact/solvers/multilevel_hierarchy.h>
 #include <fosls_contact/solvers/patch_smoother.h>
 #include <fosls_contact/solvers/solver_statistics.h>
@@ -135,26 +136,9 @@ namespace FoslsContact
      */
     struct Scratch
     {
-      /** Local fine DoFs (owned and ghost). */
-      std::vector<bool> truncated;
-      LevelVector       defect, residual, w;
-      LevelVector       r_coarse, ub_coarse, c, Ac;
-      /** Fixed or switched off (zero diagonal): truncated in every visit. */
-      std::vector<bool> fixed_truncated;
-      /** The local bounded DoFs that are not fixed_truncated. */
-      std::vector<types::global_dof_index> bounded;
-      /**
-       * The diagonal of the operator (with ghost values), and the operator
-       * it belongs to: recomputed when the operator changes, which every
-       * process sees at once (the update is collective), while the roles,
-       * which decide fixed_truncated too, can change on some processes
-       * only.
-       */
-      LevelVector                            diagonal;
-      typename LevelOperators<dim>::Version diagonal_version{nullptr, 0};
-      /** The operator and roles fixed_truncated was computed for. */
-      typename LevelOperators<dim>::Version operator_version{nullptr, 0};
-      std::vector<DoFRole>                  role;
+      LevelTruncation truncation;
+      LevelVector     residual, w;
+      LevelVector     r_coarse, ub_coarse, c, Ac;
     };
 
     /** The sweeps of @p smoother on level @p l (obstacles @p ub). */
@@ -166,19 +150,12 @@ namespace FoslsContact
                 const bool           linear);
     /**
      * The scratch of level @p l for the operator @p A and the roles
-     * @p role: the vectors, the diagonal and the part of the truncation
-     * that does not depend on the iterate.
+     * @p role: the vectors and the part of the truncation that does not
+     * depend on the iterate.
      */
     void prepare(const unsigned int          l,
                  const SparseMatrix<double> &A,
                  const std::vector<DoFRole> &role);
-    /**
-     * The truncation of level @p l at @p v (eq. 34): fixed, active and
-     * switched-off DoFs do not move; their defect obstacle is +inf (eqs.
-     * 35-36), the others' ub - v. (The ghost values of v and ub must be
-     * valid: the ghost DoFs get the same decision as at their owners.)
-     */
-    void truncate(const unsigned int l, const LevelVector &ub, const LevelVector &v);
     /**
      * Rebuild the operator of level l - 1 (and its patch smoother) for the
      * truncation of level @p l in its scratch, if it changed; returns

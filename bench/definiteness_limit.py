@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""The largest complementarity weight C_compl for which the functional is
+positive definite, level by level: how far the limit moves between the level
+the definiteness check is run on and finer levels.
+
+For each scene and value of Geometry/Levels it bisects C_compl between a
+weight the program accepts and one it refuses, with the definiteness check
+on the finest level (Solver/Definiteness check max dofs raised above its
+DoFs), and prints the bracket [accepted, refused] and its move from the
+previous level. The check's smallest relative eigenvalue of the contact
+Schur complement decides (doc/method.md section 6); the solve itself is cut
+to one active-set step.
+
+    bench/definiteness_limit.py [--exe build/fosls-contact]
+        [--scene square.prm:3-9] [--scene hertz.prm:2-7] [--tolerance 2e-3]
+"""
+import argparse
+import re
+import subprocess
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+PATTERN = re.compile(r"Definiteness check on level (\d+): smallest relative eigenvalue of the "
+                     r"contact Schur complement = (-?[0-9.eE+-]+)")
+
+
+def arguments():
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--exe", default=str(ROOT / "build" / "fosls-contact"))
+    p.add_argument("--scene", action="append", metavar="FILE:FIRST-LAST",
+                   help="a file of prm/ and its Geometry/Levels range "
+                   "(default square.prm:3-9 and hertz.prm:2-7)")
+    p.add_argument("--low", type=float, default=0.05, help="a weight accepted on every level")
+    p.add_argument("--high", type=float, default=1.0, help="a weight refused on every level")
+    p.add_argument("--tolerance", type=float, default=2e-3,
+                   help="width of the bracket (absolute)")
+    a = p.parse_args()
+    a.scene = a.scene or ["square.prm:3-9", "hertz.prm:2-7"]
+    return a
+
+
+def smallest_eigenvalue(exe, scene, levels, weight):
+    """The check's eigenvalue and level for C_compl = weight."""
+    with tempfile.TemporaryDirectory() as out:
+        run = subprocess.run(
+            [exe, str(ROOT / "prm" / scene),
+             "--set", f"Functional weights/C_compl={weight!r}",
+             "--set", f"Geometry/Levels={levels}",
+             "--set", "Solver/Definiteness check max dofs=100000000",
+             "--set", "Solver/Type=active set",
+             "--set", "Solver/Max iterations=1",
+             "--set", "Output/Write vtu=false",
+             "--set", f"Output/Directory={out}/o"],
+            capture_output=True, text=True)
+    m = PATTERN.search(run.stdout + run.stderr)
+    if not m:
+        raise SystemExit(f"no definiteness check in the output of {scene} at {levels} levels, "
+                         f"C_compl = {weight}:\n{run.stdout[-2000:]}{run.stderr[-2000:]}")
+    return int(m.group(1)), float(m.group(2))
+
+
+def limit(exe, scene, levels, low, high, tolerance):
+    """[accepted, refused] bracket of the definiteness limit."""
+    level, value = smallest_eigenvalue(exe, scene, levels, low)
+    if value <= 0:
+        raise SystemExit(f"{scene}, {levels} levels: C_compl = {low} is refused already")
+    if smallest_eigenvalue(exe, scene, levels, high)[1] > 0:
+        raise SystemExit(f"{scene}, {levels} levels: C_compl = {high} is accepted")
+    while high - low > tolerance:
+        middle = 0.5 * (low + high)
+        if smallest_eigenvalue(exe, scene, levels, middle)[1] > 0:
+            low = middle
+        else:
+            high = middle
+    return level, low, high
+
+
+def main():
+    a = arguments()
+    print("| scene | Geometry/Levels | finest level | C_compl accepted | refused | "
+          "move of the limit from the level before |")
+    print("|---|---|---|---|---|---|")
+    for spec in a.scene:
+        scene, _, span = spec.partition(":")
+        first, _, last = span.partition("-")
+        previous = None
+        for levels in range(int(first), int(last) + 1):
+            level, low, high = limit(a.exe, scene, levels, a.low, a.high, a.tolerance)
+            middle = 0.5 * (low + high)
+            move = "" if previous is None else f"{(middle - previous) / previous:+.1%}"
+            print(f"| {scene} | {levels} | {level} | {low:.4f} | {high:.4f} | {move} |",
+                  flush=True)
+            previous = middle
+
+
+if __name__ == "__main__":
+    main()

@@ -9,7 +9,7 @@ machine's scatter, 10-50% between runs of one binary here) and writes
 doc/cycle_type_results.md.
 
 Second, the time per cycle per DoF of W and F on the square's levels 5 to 9
-with 1 and 2 threads (the flatness of issue 3's item 9, doc/results.md f):
+with 1 and 2 threads (how flat it is over the levels, doc/results.md f):
 the fastest of FLAT_RUNS runs per case, W and F alternated, so that both
 see the same spells of the machine, and each first in half of the runs: with
 W always first, F's level 5 with 2 threads was 3-17% slower in all 3 runs
@@ -52,8 +52,8 @@ def flatness():
              f"fastest of {FLAT_RUNS} runs per case, W and F alternated (each first in half "
              "of the runs); µs per cycle per "
              "DoF (solve time / cycles / DoFs), cycles in parentheses. max/min over "
-             f"levels {FLAT_LEVELS[0]}-{FLAT_LEVELS[-1]} is the flatness of issue 3's item "
-             "9 (target at most 1.25).", "",
+             f"levels {FLAT_LEVELS[0]}-{FLAT_LEVELS[-1]} is how flat the time per cycle "
+             "per DoF is over the levels (doc/results.md f).", "",
              "| threads | cycle | " + " | ".join(f"level {l}" for l in FLAT_LEVELS) +
              " | max/min |",
              "|" + "---|" * (len(FLAT_LEVELS) + 3)]

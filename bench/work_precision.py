@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Work-precision study (issue 4, part A): run fosls-contact on the four
+"""Work-precision study: run fosls-contact on the four
 scenes over levels and solver settings, one process at a time, and collect
 one row per case in bench/results/work_precision/runs.csv (copied to
 doc/work_precision.csv).  doc/work_precision.md is made from that CSV by

@@ -9,12 +9,8 @@
 # energy_increases == 0 and feasible iterates; summary.json's level costs
 # (level_visits, level_time_s) have the visits of a W-cycle and times that
 # fit in the solve time.
-# Measured (Nov 2026): lambda = 1: 5, 3, 3, 4 iterations (19, 13, 12, 16
-# cycles); lambda = inf: 4, 3, 3, 3 iterations (16, 12, 12, 12 cycles);
-# level 7: 4 and 3 iterations. So max - min is 2 for lambda = 1 (no margin
-# left: the bound is the issue's; level 3, with only 2 levels below it, is
-# the outlier) and 1 for lambda = inf. The square's contact set is found
-# by the coarse start, so the problem is linear after the first smoothing
+# The counts per level are in mg_level_independence.output. The square's
+# contact set is found by the coarse start, so the problem is linear after the first smoothing
 # (paper section 7). The patch order (MultilevelHierarchy, VertexKey)
 # puts the vertices of the uniformly refined square into 4 colors on every
 # level (old vertices, midpoints of x and of y lines, cell centers).

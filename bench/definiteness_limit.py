@@ -12,7 +12,13 @@ Schur complement decides (doc/method.md section 6); the solve itself is cut
 to one active-set step.
 
     bench/definiteness_limit.py [--exe build/fosls-contact]
-        [--scene square.prm:3-9] [--scene hertz.prm:2-7] [--tolerance 2e-3]
+        [--scene square.prm:3-9] [--scene hertz.prm:2-6] [--scene cube3d.prm:2-5]
+        [--tolerance 2e-3]
+
+After the first level of a scene, the bisection starts from the last
+level's bracket: its refused weight is refused on the finer level too (the
+spaces are nested), and its accepted weight lowered by 20% (halved until
+accepted).
 """
 import argparse
 import re
@@ -21,7 +27,7 @@ import tempfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-PATTERN = re.compile(r"Definiteness check on level (\d+): smallest relative eigenvalue of the "
+PATTERN = re.compile(r"Definiteness check on level (\d+)[^:]*: smallest relative eigenvalue of the "
                      r"contact Schur complement = (-?[0-9.eE+-]+)")
 
 
@@ -30,13 +36,15 @@ def arguments():
     p.add_argument("--exe", default=str(ROOT / "build" / "fosls-contact"))
     p.add_argument("--scene", action="append", metavar="FILE:FIRST-LAST",
                    help="a file of prm/ and its Geometry/Levels range "
-                   "(default square.prm:3-9 and hertz.prm:2-7)")
-    p.add_argument("--low", type=float, default=0.05, help="a weight accepted on every level")
-    p.add_argument("--high", type=float, default=1.0, help="a weight refused on every level")
+                   "(default square.prm:3-9, hertz.prm:2-6 and cube3d.prm:2-5)")
+    p.add_argument("--low", type=float, default=0.2,
+                   help="a weight accepted on the first level (default 0.2)")
+    p.add_argument("--high", type=float, default=1.0,
+                   help="a weight refused on the first level (default 1)")
     p.add_argument("--tolerance", type=float, default=2e-3,
                    help="width of the bracket (absolute)")
     a = p.parse_args()
-    a.scene = a.scene or ["square.prm:3-9", "hertz.prm:2-7"]
+    a.scene = a.scene or ["square.prm:3-9", "hertz.prm:2-6", "cube3d.prm:2-5"]
     return a
 
 
@@ -63,8 +71,11 @@ def smallest_eigenvalue(exe, scene, levels, weight):
 def limit(exe, scene, levels, low, high, tolerance):
     """[accepted, refused] bracket of the definiteness limit."""
     level, value = smallest_eigenvalue(exe, scene, levels, low)
-    if value <= 0:
-        raise SystemExit(f"{scene}, {levels} levels: C_compl = {low} is refused already")
+    while value <= 0:  # refused: the limit is below low
+        if low < 1e-3:
+            raise SystemExit(f"{scene}, {levels} levels: even C_compl = {low} is refused")
+        high, low = low, 0.5 * low
+        level, value = smallest_eigenvalue(exe, scene, levels, low)
     if smallest_eigenvalue(exe, scene, levels, high)[1] > 0:
         raise SystemExit(f"{scene}, {levels} levels: C_compl = {high} is accepted")
     while high - low > tolerance:
@@ -85,8 +96,14 @@ def main():
         scene, _, span = spec.partition(":")
         first, _, last = span.partition("-")
         previous = None
+        low, high = a.low, a.high
         for levels in range(int(first), int(last) + 1):
-            level, low, high = limit(a.exe, scene, levels, a.low, a.high, a.tolerance)
+            # the limit only goes down under refinement (nested spaces): the
+            # last level's refused weight is refused here too, and the
+            # bracket starts below its accepted one
+            level, low, high = limit(a.exe, scene, levels,
+                                     a.low if previous is None else 0.8 * low,
+                                     high, a.tolerance)
             middle = 0.5 * (low + high)
             move = "" if previous is None else f"{(middle - previous) / previous:+.1%}"
             print(f"| {scene} | {levels} | {level} | {low:.4f} | {high:.4f} | {move} |",

@@ -51,7 +51,10 @@ namespace FoslsContact
                           "the Schur complement of the functional onto the contact "
                           "normal DoFs on the finest level with at most this many "
                           "DoFs; indefiniteness there implies indefiniteness on "
-                          "every finer level (nested spaces). 0: skip the check.");
+                          "every finer level (nested spaces). The largest definite "
+                          "C_compl falls under refinement, so on a coarser level "
+                          "than the finest C_compl is checked raised by 50% (doc/"
+                          "method.md section 6). 0: skip the check.");
       }
     } // namespace
 

@@ -170,6 +170,11 @@ namespace FoslsContact
               << parameters.solver.definiteness_max_dofs << " DoFs" << std::endl;
         return 0;
       }
+    // On a coarser level, C_compl with the margin for the finer ones.
+    const bool          coarser = static_cast<unsigned int>(level) < discretization.finest_level();
+    Parameters::Weights checked = w;
+    if (coarser)
+      checked.c_compl *= 1. + coarse_level_margin;
     // on the first process, on the gathered problem of that level
     DefinitenessCheck result;
     auto              check = [&](const ConstrainedQP &level_qp) {
@@ -181,29 +186,34 @@ namespace FoslsContact
                                   result.min_relative_eigenvalue,
                                   0);
     };
-    if (static_cast<unsigned int>(level) == discretization.finest_level())
+    if (!coarser)
       check(qp);
     else
       {
         ConstrainedQP coarse;
         coarse.reinit(discretization.level(level));
-        FoslsAssembler<dim>(discretization, w)
-          .assemble(level, coarse);
+        FoslsAssembler<dim>(discretization, checked).assemble(level, coarse);
         check(coarse);
       }
-    const double seconds = wall.wall_time();
-    pcout << "Definiteness check on level " << level + 1
+    const double       seconds = wall.wall_time();
+    std::ostringstream margin;
+    if (coarser)
+      margin << " with C_compl = " << checked.c_compl << " (" << 100 * coarse_level_margin
+             << "% margin for the finer levels)";
+    pcout << "Definiteness check on level " << level + 1 << margin.str()
           << ": smallest relative eigenvalue of the contact Schur complement = "
           << std::setprecision(4) << result.min_relative_eigenvalue << std::endl;
     std::ostringstream weights;
     weights << "C_eq = " << w.c_eq << ", C_const = " << w.c_const
             << ", C_compl = " << w.c_compl;
     AssertThrow(result.definite(),
-                ExcMessage("the functional is indefinite for " + weights.str() +
+                ExcMessage("the functional is indefinite" +
+                           std::string(coarser ? ", or within the margin of it," : "") +
+                           " for " + weights.str() +
                            " (smallest relative eigenvalue of the contact "
                            "Schur complement " +
-                           json_number(result.min_relative_eigenvalue) +
-                           " on level " + std::to_string(level + 1) +
+                           json_number(result.min_relative_eigenvalue) + " on level " +
+                           std::to_string(level + 1) + margin.str() +
                            "): decrease 'Functional weights/C_compl' or "
                            "increase C_eq/C_const (paper eq. 10)"));
     return seconds;

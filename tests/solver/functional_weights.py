@@ -14,8 +14,8 @@
 #    the solver's own count energy_increases == 0).
 #  - C_compl = 0 (no complementarity term; no definiteness check): the
 #    default solver converges to the reference as well (measured 4
-#    iterations; the plain cycle does not converge in 200 cycles, known
-#    problem, test bug_plain_cycle).
+#    iterations; the plain cycle is not run: without the complementarity
+#    term it does not converge in 200 cycles).
 #  - The definiteness limit of C_compl (paper eq. 10): at 4 levels with the
 #    default C_eq = 1e2, C_const = 1, the program accepts C_compl = 0.297
 #    (smallest relative eigenvalue of the contact Schur complement 1.7e-7)
@@ -24,6 +24,8 @@
 #    reference; C_compl = 0.3 is refused with exit code 1, exactly one line
 #    on stderr mentioning C_compl, and no output directory. The limit
 #    falls with the level: C_compl = 0.29 is refused at 5 levels.
+#  - A check on a coarser level than the finest adds a margin to C_compl
+#    (below): 0.28 is refused, 0.19 accepted and converges.
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
@@ -67,11 +69,18 @@ print("=== C_compl = 0.29, 4 levels (just below the limit)")
 converges(["Geometry/Levels=4", "Functional weights/C_compl=0.29"],
           "C_compl_0.29", (10, 20))
 
-for c_compl, levels in [("0.3", 4), ("0.29", 5)]:
-    print("=== C_compl = %s, %d levels (above the limit)" % (c_compl, levels))
+# With the check on a coarser level than the finest (Solver/Definiteness
+# check max dofs = 500: level 4 of 450 DoFs for 5 levels), C_compl is
+# checked with the margin of ProblemChecks::coarse_level_margin: 0.28 is
+# definite on level 4 alone (its limit 0.297) but not on the finest level 5
+# (limit 0.269, bench/definiteness_limit.py), and must be refused.
+coarse_check = ["Solver/Definiteness check max dofs=500"]
+for c_compl, levels, more in [("0.3", 4, []), ("0.29", 5, []), ("0.28", 5, coarse_check)]:
+    print("=== C_compl = %s, %d levels (above the limit)%s"
+          % (c_compl, levels, ", checked on level 4" if more else ""))
     run = R.run("prm/square.prm", ["Geometry/Levels=%d" % levels,
-                                   "Functional weights/C_compl=" + c_compl],
-                "C_compl_%s_%d" % (c_compl, levels))
+                                   "Functional weights/C_compl=" + c_compl] + more,
+                "C_compl_%s_%d%s" % (c_compl, levels, "_coarse_check" if more else ""))
     lines = run.stderr.splitlines()
     print("exit code %d, %d line(s) on stderr" % (run.returncode, len(lines)))
     check(run.returncode == 1, "refused with exit code 1")
@@ -79,4 +88,7 @@ for c_compl, levels in [("0.3", 4), ("0.29", 5)]:
           and "indefinite" in lines[0],
           "one line on stderr: indefinite ... C_compl")
     check(not os.path.exists(run.directory), "no output directory written")
+print("=== C_compl = 0.19, 5 levels, checked on level 4 with the margin")
+converges(["Geometry/Levels=5", "Functional weights/C_compl=0.19"] + coarse_check,
+          "C_compl_0.19_coarse_check", (10,))
 finish()

@@ -41,8 +41,27 @@ namespace FoslsContact
      * eq. 10), checked on the finest level with at most Solver/Definiteness
      * check max dofs DoFs, in the section "Definiteness check" of @p timer.
      * Returns the wall seconds it took (0 if skipped).
+     *
+     * A coarser level than the finest is checked with C_compl raised by
+     * coarse_level_margin: the largest definite C_compl can only go down
+     * under refinement (the spaces are nested), so passing there alone
+     * would not mean passing on the finest level.
      */
     double check_definiteness(TimerOutput &timer) const;
+
+    /**
+     * The relative margin on C_compl of a check on a coarser level than
+     * the finest. bench/definiteness_limit.py bisects the largest definite
+     * C_compl level by level: it goes down under refinement by a share that
+     * shrinks from level to level by a steady factor (on the square about
+     * 1/2: -19.7%, -9.7%, -3.8% from level 3 to 6; on the cube about 0.6:
+     * -35.6%, -21.3% from level 2 to 4), so the way down from a level is
+     * about its last step times factor / (1 - factor): on the square's
+     * level 6 3.3% (measured to level 9), on the cube's level 4 about a
+     * third. The margin covers
+     * both; figures in doc/method.md section 6.
+     */
+    static constexpr double coarse_level_margin = 0.5;
 
   private:
     const Parameters::AllParameters &parameters;

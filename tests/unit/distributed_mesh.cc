@@ -139,6 +139,10 @@ main(int argc, char **argv)
   test<2>("half disc", "hertz.prm", 3, {}, true);
   test<3>("cube (box)", "cube3d.prm", 2, {}, false);
   test<3>("half ball", "half_ball.prm", 2, {}, true);
-  test<3>("quarter ball from a mesh file", "quarter_ball_file.prm", 2, {}, true);
+  test<3>("quarter ball from a mesh file",
+          "quarter_ball_file.prm",
+          2,
+          {{"Geometry/Mesh file", std::string(FOSLS_SOURCE_DIR) + "/prm/meshes/quarter_ball.msh"}},
+          true);
   return exit_code();
 }

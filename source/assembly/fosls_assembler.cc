@@ -317,6 +317,13 @@ namespace FoslsContact
               copy.k_total.add(2., copy.k_compl);
               copy.r_total.add(2., copy.r_compl);
             }
+          // the matrices of J's parts, 2 K_eq and 2 K_compl, summed doubled
+          // (doubling is exact, so the sums are 2 times those of K): an
+          // empty matrix (no DoFs of the level here) is never scaled, which
+          // deal.II does not allow
+          copy.k_eq *= 2.;
+          if (copy.touches_contact)
+            copy.k_compl *= 2.;
           copy.valid = true;
         }
       catch (...)
@@ -363,8 +370,6 @@ namespace FoslsContact
                     AssemblyCopy(n));
     if (error)
       std::rethrow_exception(error);
-    qp.matrix_eq *= 2.;
-    qp.matrix_compl *= 2.;
     qp.compress_matrices();
     qp.constant_eq = Utilities::MPI::sum(qp.constant_eq, qp.get_communicator());
     qp.constant    = qp.constant_eq;

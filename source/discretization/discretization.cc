@@ -16,6 +16,7 @@
 #include <iomanip>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 namespace FoslsContact
 {
@@ -32,15 +33,21 @@ namespace FoslsContact
   {
     {
       // the coarse mesh is built serially (on every process, identically)
-      // and handed to p4est
+      // and handed to p4est by its description and manifolds, not by
+      // copy_triangulation(): that would replace the mesh smoothing the
+      // distributed mesh got above with the serial mesh's, and multigrid
+      // DoFs need limit_level_difference_at_vertices (distribute_mg_dofs()
+      // checks it), which a mesh cannot be given once it has cells
       Triangulation<dim> coarse;
       scene.make_coarse_mesh(coarse);
-      coarse_ratio = Scene<dim>::mesh_size_ratio(coarse);
-      triangulation.copy_triangulation(coarse);
-      // copy_triangulation() takes the coarse mesh's smoothing as well, and
-      // multigrid DoFs need this one (a debug build of deal.II checks it in
-      // distribute_mg_dofs())
-      triangulation.set_mesh_smoothing(Triangulation<dim>::limit_level_difference_at_vertices);
+      coarse_ratio           = Scene<dim>::mesh_size_ratio(coarse);
+      const auto description = GridTools::get_coarse_mesh_description(coarse);
+      triangulation.create_triangulation(std::get<0>(description),
+                                         std::get<1>(description),
+                                         std::get<2>(description));
+      for (const types::manifold_id id : coarse.get_manifold_ids())
+        if (id != numbers::flat_manifold_id)
+          triangulation.set_manifold(id, coarse.get_manifold(id));
     }
     triangulation.refine_global(n_levels - 1);
     scene.check_cell_shapes(triangulation, comm);
@@ -108,7 +115,9 @@ namespace FoslsContact
     data.role.assign(n_local, DoFRole::free);
     data.fixed_values.reinit(data.partitioner);
     data.upper_bounds.reinit(data.partitioner);
-    data.upper_bounds.add(std::numeric_limits<double>::infinity());
+    // no upper bound until a contact DoF gets one; assigned, not add()ed:
+    // add() takes finite numbers only (deal.II's debug build checks it)
+    data.upper_bounds = std::numeric_limits<double>::infinity();
     data.rotation_of_dof.assign(n_local, numbers::invalid_unsigned_int);
 
     // Which DoF is which: the base element (0 = Q1^d, 1 = RT0^d), its copy

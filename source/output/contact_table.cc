@@ -36,7 +36,9 @@ namespace FoslsContact
     LevelVector cartesian = x;
     discretization.rotate_to_cartesian(discretization.finest_level(), cartesian);
     // sigma_nn at a vertex: mean over the contact faces that contain it
-    // (all of them are here for an owned vertex)
+    // (all of them are here for an owned vertex; a ghost face's entry is
+    // read through LocalElements)
+    const LocalElements                                     x_local(x);
     std::map<unsigned int, std::pair<double, unsigned int>> face_mean;
     for (const auto &cell : discretization.get_dof_handler()
                               .mg_cell_iterators_on_level(discretization.finest_level()))
@@ -46,7 +48,7 @@ namespace FoslsContact
               discretization.get_scene().is_contact(cell->face(f)->boundary_id()))
             {
               const auto   face = cell->face(f);
-              const double s = x.local_element(level.face_dofs.at(face->index())[0]);
+              const double s = x_local(level.face_dofs.at(face->index())[0]);
               for (const unsigned int v : face->vertex_indices())
                 {
                   auto &entry = face_mean[face->vertex_index(v)];

@@ -81,9 +81,12 @@ namespace FoslsContact
     {
       const auto &                 level = discretization.level(discretization.finest_level());
       std::map<unsigned int, bool> active_vertex;
-      // (x's ghost values: from ContactTable::csv() before)
+      // (x's ghost values: from ContactTable::csv() before; read through
+      // LocalElements)
+      const LocalElements x_local(x);
       for (const auto &cv : level.contact_vertices)
-        active_vertex[cv.vertex_index] = ContactTable<dim>::in_contact(x.local_element(cv.normal_dof), cv.gap);
+        active_vertex[cv.vertex_index] =
+          ContactTable<dim>::in_contact(x_local(cv.normal_dof), cv.gap);
       for (const auto &cell : tria.active_cell_iterators())
         if (cell->is_locally_owned())
           for (const unsigned int v : cell->vertex_indices())

@@ -11,13 +11,14 @@ namespace FoslsContact
                      const double                c)
   {
     update_ghosts(x);
-    const auto partial = sum_over_row_blocks<CompensatedSum>(
+    const LocalElements x_local(x); // (the ghost entries too: see LocalElements)
+    const auto          partial = sum_over_row_blocks<CompensatedSum>(
       x.locally_owned_size(), [&](CompensatedSum &sum, const unsigned int i) {
         // (M x)_i in twice the precision, times x_i / 2
         const double   xi = x.local_element(i);
         CompensatedSum row;
         for (auto e = M.begin(i); e != M.end(i); ++e)
-          row.add_product(e->value(), x.local_element(e->column()));
+          row.add_product(e->value(), x_local(e->column()));
         sum.add_product(0.5 * xi, row.sum);
         sum.add(0.5 * xi * row.error);
         sum.add_product(-b.local_element(i), xi);

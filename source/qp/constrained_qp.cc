@@ -65,11 +65,13 @@ namespace FoslsContact
   void
   ConstrainedQP::project_to_feasible(LevelVector &x) const
   {
+    // (the ghost entries too: see LocalElements)
+    const LocalElements fixed(fixed_values), ub(upper_bounds);
     for (unsigned int i = 0; i < role.size(); ++i)
       if (role[i] == DoFRole::fixed)
-        x.local_element(i) = fixed_values.local_element(i);
+        x.local_element(i) = fixed(i);
       else if (role[i] == DoFRole::bounded)
-        x.local_element(i) = std::min(x.local_element(i), upper_bounds.local_element(i));
+        x.local_element(i) = std::min(x.local_element(i), ub(i));
   }
 
 
@@ -124,14 +126,15 @@ namespace FoslsContact
     // relative to the size of the terms of each row, sum_j |A_ij x_j|, so
     // that the residual is meaningful also when b = 0 (pure Dirichlet data)
     double scale = rhs.linfty_norm();
-    double local_scale = 0, bound_scale = 1;
+    double              local_scale = 0, bound_scale = 1;
+    const LocalElements x_local(x); // (ghost entries updated by vmult())
     for (unsigned int i = 0; i < n_owned(); ++i)
       {
         if (role[i] != DoFRole::fixed)
           {
             double row = 0;
             for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
-              row += std::abs(e->value() * x.local_element(e->column()));
+              row += std::abs(e->value() * x_local(e->column()));
             local_scale = std::max(local_scale, row);
           }
         if (role[i] == DoFRole::bounded)
@@ -185,13 +188,14 @@ namespace FoslsContact
   ConstrainedQP::round_off_correction(const LevelVector &x) const
   {
     update_ghosts(x);
-    const auto partial = sum_over_row_blocks<double>(
+    const LocalElements x_local(x);
+    const auto          partial = sum_over_row_blocks<double>(
       n_owned(), [&](double &sum, const unsigned int i) {
         if (role[i] != DoFRole::fixed && matrix.diag_element(i) > 0)
           {
             double s = std::abs(rhs.local_element(i));
             for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
-              s += std::abs(e->value() * x.local_element(e->column()));
+              s += std::abs(e->value() * x_local(e->column()));
             sum += s * s / matrix.diag_element(i);
           }
       });

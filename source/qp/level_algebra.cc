@@ -142,13 +142,14 @@ namespace FoslsContact
   matrix_norm_square(const SparseMatrix<double> &A, const LevelVector &x)
   {
     update_ghosts(x);
-    const unsigned int n_owned = x.locally_owned_size();
-    double             local   = 0;
+    const LocalElements x_local(x);
+    const unsigned int  n_owned = x.locally_owned_size();
+    double              local   = 0;
     for (unsigned int i = 0; i < n_owned; ++i)
       {
         double row = 0;
         for (auto e = A.begin(i); e != A.end(i); ++e)
-          row += e->value() * x.local_element(e->column());
+          row += e->value() * x_local(e->column());
         local += x.local_element(i) * row;
       }
     return Utilities::MPI::sum(local, x.get_mpi_communicator());

@@ -30,9 +30,10 @@ namespace FoslsContact
     // (measured on A: all entries are below 1e-15 or above 1e-8 of
     // sqrt(a_ii a_jj); the patch colors do not rely on symmetry).
     const LevelVector   d = diagonal(matrix, partitioner);
+    const LocalElements d_local(d); // (with the ghost entries: see LocalElements)
     std::vector<double> root_diagonal(d.locally_owned_size() + partitioner->n_ghost_indices());
     for (unsigned int i = 0; i < root_diagonal.size(); ++i)
-      root_diagonal[i] = std::sqrt(std::abs(d.local_element(i)));
+      root_diagonal[i] = std::sqrt(std::abs(d_local(i)));
     for_subranges(
       0u,
       partitioner->locally_owned_size(),

@@ -28,7 +28,10 @@ namespace FoslsContact
       const auto &       partitioner = x.get_partitioner();
       const unsigned int n_owned     = x.locally_owned_size();
       SparseMatrix<double> M(A.get_sparsity_pattern());
-      M.copy_from(A);
+      // (a process without DoFs of the level has an empty matrix: nothing
+      // to copy, and copy_from() requires stored entries)
+      if (A.n_nonzero_elements() > 0)
+        M.copy_from(A);
       // rhs -= A(:, E) x_E, then identity rows/columns on E.
       LevelVector rhs(b), xe(partitioner), tmp(partitioner);
       for (unsigned int i = 0; i < n_owned; ++i)

@@ -47,9 +47,12 @@ namespace FoslsContact
   LevelTruncation::truncate(const LevelVector &ub, const LevelVector &v)
   {
     truncated_dofs = fixed_truncated;
+    // (bounded_dofs has ghost DoFs, whose entries the caller has updated:
+    // see LocalElements)
+    const LocalElements v_local(v), ub_local(ub);
     for (const auto i : bounded_dofs)
       {
-        const double vi = v.local_element(i), ubi = ub.local_element(i);
+        const double vi = v_local(i), ubi = ub_local(i);
         truncated_dofs[i] = vi >= ubi; // active
         defect.local_element(i) =
           truncated_dofs[i] ? std::numeric_limits<double>::infinity() : ubi - vi;

@@ -93,11 +93,12 @@ namespace FoslsContact
   {
     // A DoF that sits at its bound while the gradient pulls it inside
     // (mu_i < 0) is left free, so that the Newton direction can release it.
+    // (the ghost DoFs too, whose entries are valid here: see LocalElements)
+    const LocalElements x_local(x), ub(qp.upper_bounds), r(residual);
     linear_role = qp.role;
     for (unsigned int i = 0; i < qp.role.size(); ++i)
       if (qp.role[i] == DoFRole::bounded)
-        linear_role[i] = (x.local_element(i) >= qp.upper_bounds.local_element(i) &&
-                          residual.local_element(i) >= 0) ?
+        linear_role[i] = (x_local(i) >= ub(i) && r(i) >= 0) ?
                            DoFRole::fixed :
                            DoFRole::free;
   }

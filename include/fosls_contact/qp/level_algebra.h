@@ -35,6 +35,12 @@ namespace FoslsContact
    * vector of their own, so that deal.II's SparseMatrix kernels work on the
    * local matrices of the program (square, in local indices) without a
    * copy. Has exactly what SparseMatrix::vmult needs.
+   *
+   * It is also how the program reads ghost entries: they are valid after
+   * update_ghosts() until the owned entries change, but update_ghosts()
+   * leaves the vector out of deal.II's ghost state, and deal.II's const
+   * LevelVector::local_element() refuses to read a ghost entry of such a
+   * vector (its debug build checks it).
    */
   class LocalElements
   {
@@ -50,8 +56,18 @@ namespace FoslsContact
     size_type size() const { return n; }
     iterator begin() { return data; }
     const_iterator begin() const { return data; }
-    double operator()(const size_type i) const { return data[i]; }
-    double &operator()(const size_type i) { return data[i]; }
+    double
+    operator()(const size_type i) const
+    {
+      AssertIndexRange(i, n);
+      return data[i];
+    }
+    double &
+    operator()(const size_type i)
+    {
+      AssertIndexRange(i, n);
+      return data[i];
+    }
 
   private:
     double *  data;

@@ -12,20 +12,19 @@ namespace FoslsContact
                            const std::vector<DoFRole> &                              role)
   {
     const unsigned int n_local = partitioner->locally_owned_size() + partitioner->n_ghost_indices();
-    if (level_partitioner != partitioner)
+    if (defect.get_partitioner() != partitioner)
       {
-        level_partitioner = partitioner;
         truncated_dofs.resize(n_local);
         defect.reinit(partitioner);
       }
-    if (diagonal_version != version)
+    const bool new_operator = operator_version != version;
+    if (new_operator)
       {
         // (the same on every process: the diagonal has ghost values)
         diagonal_values = diagonal(A, partitioner);
         update_ghosts(diagonal_values); // (an assignment copies the owned entries only)
-        diagonal_version = version;
       }
-    if (operator_version != version || roles != role)
+    if (new_operator || roles != role)
       {
         fixed_truncated.resize(n_local);
         bounded_dofs.clear();

@@ -71,21 +71,19 @@ namespace FoslsContact
     const std::vector<types::global_dof_index> &bounded() const { return bounded_dofs; }
 
   private:
-    std::shared_ptr<const Utilities::MPI::Partitioner> level_partitioner;
-    std::vector<bool>                                  truncated_dofs;
-    LevelVector                                        defect;
+    std::vector<bool> truncated_dofs;
+    /** On the level's partitioner: prepare() sets it up when that changes. */
+    LevelVector defect;
     /** Fixed or switched off: truncated in every visit. */
     std::vector<bool>                    fixed_truncated;
     std::vector<types::global_dof_index> bounded_dofs;
     /**
-     * The diagonal of the operator (with ghost values) and the operator it
-     * belongs to: recomputed when the operator changes, which every
-     * process sees at once (the update is collective), while the roles can
-     * change on some processes only.
+     * The diagonal of the operator (with ghost values): recomputed when the
+     * operator changes, which every process sees at once (the update is
+     * collective), while the roles can change on some processes only.
      */
     LevelVector diagonal_values;
-    Version     diagonal_version{nullptr, 0};
-    /** The operator and roles fixed_truncated was computed for. */
+    /** The operator and roles the diagonal and fixed_truncated belong to. */
     Version              operator_version{nullptr, 0};
     std::vector<DoFRole> roles;
   };

@@ -94,13 +94,8 @@ namespace FoslsContact
     const ProblemChecks<dim> checks(parameters, scene, *discretization, qp, pcout);
     checks.check_data();
     checks.check_rigid_motions();
-    time_setup += checks.check_definiteness(timer);
+    time_setup += checks.check_definiteness(timer, &definite_levels);
   }
-
-
-
-
-
 
 
   template <int dim>
@@ -142,7 +137,7 @@ namespace FoslsContact
     monitor->set_functional_unit(scene.scaling().functional(dim));
     const CommunicationCounter before = communication();
     solver->solve(qp, solution, *monitor);
-    time_solve          = wall.wall_time();
+    time_solve += wall.wall_time();
     solve_communication = {communication().exchanges - before.exchanges,
                            communication().values - before.values};
 
@@ -176,25 +171,40 @@ namespace FoslsContact
 
   template <int dim>
   void
-  FoslsProblem<dim>::output_results(OutputDirectory &output)
+  FoslsProblem<dim>::output_step(OutputDirectory &output)
   {
-    TimerOutput::Scope   t(timer, "Output");
+    TimerOutput::Scope    t(timer, "Output");
     const RunSummary<dim> run_summary(
       parameters, scene, *discretization, qp, solution, *solver, *monitor, pcout);
-    auto                  summary =
-      run_summary.cost(timer, time_setup, time_solve, phase_memory, solve_communication);
+    summary = run_summary.cost(timer, time_setup, time_solve, phase_memory, solve_communication);
     Postprocessor<dim>   post(*discretization, parameters);
     const LevelVector    cartesian = post.solution_in_scene_units(solution);
     const Tensor<1, dim> force     = post.contact_force(cartesian);
-    ErrorIndicators<dim> indicators(*discretization, parameters.weights);
-    indicators.compute(solution);
+    indicators = std::make_unique<ErrorIndicators<dim>>(*discretization, parameters.weights);
+    indicators->compute(solution);
     run_summary.add_solver(summary);
-    const FunctionalValue J = run_summary.add_solution(summary, post, cartesian, force, indicators);
+    const FunctionalValue J = run_summary.add_solution(summary, post, cartesian, force, *indicators);
+
+    AdaptiveSteps::Step row;
+    row.cells      = discretization->get_triangulation().n_global_active_cells();
+    row.dofs       = qp.size();
+    row.iterations = monitor->iterations();
+    row.converged  = monitor->converged();
+    row.functional       = J.total;
+    row.functional_start = monitor->get_history().front().functional.total *
+                           scene.scaling().functional(dim);
+    for (unsigned int d = 0; d < dim; ++d)
+      row.force.push_back(force[d]);
+    row.time_solve_s = time_solve - steps.total_solve_time();
     if (parameters.hertz.shape != Parameters::HertzComparison::Shape::none &&
         scene.has_contact())
-      run_summary.add_hertz_comparison(summary, post, force);
+      row.hertz_pressure_error = run_summary.add_hertz_comparison(summary, post, force);
     if (scene.has_exact_solution())
-      run_summary.add_errors(summary, post, cartesian);
+      {
+        const ErrorNorms e   = run_summary.add_errors(summary, post, cartesian);
+        row.error_u_h1       = e.u_h1();
+        row.error_sigma_hdiv = e.sigma_hdiv();
+      }
 
     pcout << "Functional J = " << std::scientific << std::setprecision(6)
           << J.total << " (eq " << J.eq << ", const " << J.constitutive
@@ -207,15 +217,88 @@ namespace FoslsContact
           pcout << ' ' << std::setprecision(8) << force[d];
         pcout << std::defaultfloat << std::endl;
       }
-    post.write(solution, *monitor, summary, used_parameters, indicators, output);
-    pcout << "Output written to " << parameters.output.directory << "/"
-          << std::endl;
+    post.write_step(solution, *indicators, step, output);
+    steps.add(row);
   }
 
 
+  template <int dim>
+  bool
+  FoslsProblem<dim>::adapt_further(std::string &why) const
+  {
+    const auto &adaptivity = parameters.adaptivity;
+    if (!adaptivity.enabled())
+      return false;
+    if (!monitor->converged())
+      why = "the solve did not converge";
+    else if (step == adaptivity.steps)
+      why = "Adaptivity/Steps = " + std::to_string(adaptivity.steps) + " done";
+    else if (adaptivity.target_root_functional > 0 &&
+             std::sqrt(std::max(0., steps.back().functional)) <=
+               adaptivity.target_root_functional)
+      why = "sqrt(J) at most Adaptivity/Target sqrt(J)";
+    return why.empty();
+  }
 
 
+  template <int dim>
+  bool
+  FoslsProblem<dim>::refine()
+  {
+    TimerOutput::Scope t(timer, "Refinement");
+    Timer              wall;
+    Vector<float> criteria(discretization->get_triangulation().n_active_cells());
+    for (const auto &cell : discretization->get_triangulation().active_cell_iterators())
+      if (cell->is_locally_owned())
+        criteria[cell->active_cell_index()] = indicators->squared(cell->active_cell_index());
+    carried = solution;
+    discretization->rotate_to_cartesian(discretization->finest_level(), carried);
+    carried = discretization->to_active(carried);
+    const bool refined = discretization->refine(criteria, parameters.adaptivity, &carried);
+    time_setup += wall.wall_time();
+    return refined;
+  }
 
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::start_from_carried()
+  {
+    TimerOutput::Scope t(timer, "Initial guess");
+    const unsigned int L    = discretization->finest_level();
+    const auto &       fine = discretization->level(L);
+    solution.reinit(qp.partitioner);
+    solution.copy_locally_owned_data_from(carried);
+    update_ghosts(solution);
+    for (const auto &hanging : fine.hanging)
+      solution.local_element(hanging.first) = 0.;
+    discretization->rotate_to_normal_tangential(L, solution);
+    pcout << "Initial guess: the solution on the previous mesh, interpolated; it violates "
+             "the contact constraints by "
+          << std::scientific << std::setprecision(3)
+          << qp.max_violation(solution) * scene.scaling().length << std::defaultfloat
+          << " (projected onto them)" << std::endl;
+  }
+
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::finish(OutputDirectory &output)
+  {
+    TimerOutput::Scope                 t(timer, "Output");
+    std::map<std::string, std::string> extra_files;
+    if (parameters.adaptivity.enabled())
+      {
+        pcout << "Adaptive loop: " << steps.size() << " meshes; stopped as " << adaptive_stop
+              << std::endl;
+        summary["adaptive_steps"] = steps.json();
+        summary["adaptive_stop"]  = "\"" + adaptive_stop + "\"";
+        extra_files["adaptive_steps.csv"] = steps.csv();
+      }
+    Postprocessor<dim>(*discretization, parameters)
+      .write(solution, *monitor, summary, used_parameters, extra_files, output);
+    pcout << "Output written to " << parameters.output.directory << "/" << std::endl;
+  }
 
 
   template <int dim>
@@ -237,6 +320,11 @@ namespace FoslsContact
   std::string
   FoslsProblem<dim>::run()
   {
+    // (a parameter error, before any work: Discretization explains why)
+    AssertThrow(!parameters.adaptivity.enabled() ||
+                  Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1,
+                ExcMessage("parameter 'Adaptivity/Steps' > 0 runs on one MPI process, not " +
+                           std::to_string(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD))));
     // an unusable output directory is found before the work, not after it
     OutputDirectory output(parameters.output.directory, MPI_COMM_WORLD);
     // one line as each phase ends, so that a long run shows where it is
@@ -248,12 +336,40 @@ namespace FoslsContact
       record_memory(name);
     };
     phase("Setup: mesh, DoFs, levels", [&] { setup(); });
-    phase("Assembly", [&] { assemble(); });
-    phase("Checks: data, rigid motions, definiteness", [&] { check_problem(); });
-    phase("Initial guess", [&] { make_initial_guess(); });
-    phase("Setup: solver", [&] { setup_solver(); });
-    phase("Solve", [&] { solve(); });
-    phase("Output", [&] { output_results(output); });
+    for (step = 0;; ++step)
+      {
+        Timer step_wall;
+        phase("Assembly", [&] { assemble(); });
+        phase("Checks: data, rigid motions, definiteness", [&] { check_problem(); });
+        phase("Initial guess", [&] { step == 0 ? make_initial_guess() : start_from_carried(); });
+        phase("Setup: solver", [&] { setup_solver(); });
+        phase("Solve", [&] { solve(); });
+        // (the files of the whole run with the last step's)
+        bool further = false;
+        phase("Output", [&] {
+          output_step(output);
+          steps.set_step_time(step_wall.wall_time());
+          further = adapt_further(adaptive_stop);
+          if (!further)
+            finish(output);
+        });
+        if (!further)
+          break;
+        bool refined = false;
+        phase("Refinement", [&] { refined = refine(); });
+        if (!refined)
+          {
+            adaptive_stop = "the next mesh could have more than Adaptivity/Max DoFs DoFs";
+            phase("Output", [&] { finish(output); });
+            break;
+          }
+        const auto &fine = discretization->level(discretization->finest_level());
+        pcout << "Adaptive step " << step + 1 << ": "
+              << discretization->get_triangulation().n_global_active_cells() << " cells, "
+              << fine.n_dofs << " DoFs, " << discretization->get_triangulation().n_global_levels()
+              << " mesh levels" << std::endl;
+      }
+
     if (parameters.output.verbose)
       {
         timer.print_summary();

@@ -20,6 +20,7 @@ namespace FoslsContact
       Solver::declare_parameters(prm);
       Output::declare_parameters(prm);
       HertzComparison::declare_parameters(prm);
+      Adaptivity::declare_parameters(prm);
     }
 
     void
@@ -63,6 +64,11 @@ namespace FoslsContact
                       ExcMessage("parameter 'Hertz comparison/Contact point' needs " +
                                  std::to_string(geometry.dimension) + " entries"));
         }
+
+      adaptivity.parse_parameters(prm);
+      AssertThrow(!adaptivity.enabled() || solver.type == Solver::Type::active_set,
+                  ExcMessage("parameter 'Adaptivity/Steps' > 0 needs 'Solver/Type' = active "
+                             "set: the multilevel solvers run on uniformly refined meshes"));
 
       boundary_conditions.parse_components(geometry.dimension);
     }

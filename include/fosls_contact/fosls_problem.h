@@ -11,6 +11,7 @@
 #include <fosls_contact/output/output_directory.h>
 #include <fosls_contact/output/postprocessor.h>
 #include <fosls_contact/parameters.h>
+#include <fosls_contact/problem/adaptive_steps.h>
 #include <fosls_contact/problem/run_summary.h>
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/scene/scene.h>
@@ -18,6 +19,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 
 namespace FoslsContact
@@ -28,7 +30,9 @@ namespace FoslsContact
    *   scene -> mesh and DoFs -> assembled functional -> constraints in
    *   normal-tangential coordinates -> solver -> output,
    *
-   * one member function per box, each in its own TimerOutput section. It
+   * one member function per box, each in its own TimerOutput section; an
+   * adaptive run (Adaptivity) goes round from the assembly to the output
+   * once per mesh, refining by the error indicators in between. It
    * runs on all processes of MPI_COMM_WORLD (started by mpirun) or on one;
    * the screen output comes from the first.
    */
@@ -55,7 +59,31 @@ namespace FoslsContact
     void make_initial_guess();
     void setup_solver();
     void solve();
-    void output_results(OutputDirectory &output);
+    /**
+     * The figures of this step's solution (summary.json's fields, printed
+     * as well), its error indicators and its VTU files; a row of the step
+     * table.
+     */
+    void output_step(OutputDirectory &output);
+    /**
+     * Whether the adaptive loop goes on after this step (Adaptivity): not
+     * after the last step, a target reached or a solve not converged;
+     * @p why says why not.
+     */
+    bool adapt_further(std::string &why) const;
+    /**
+     * Refine by the error indicators and carry the solution over to the
+     * new mesh as the next step's start; false if the DoF budget stops it.
+     */
+    bool refine();
+    /**
+     * The start of a step after the first: the previous solution,
+     * interpolated to the refined mesh, in the rotated basis (the solver
+     * projects it onto the contact constraints).
+     */
+    void start_from_carried();
+    /** The files of the whole run, published with the steps' VTU files. */
+    void finish(OutputDirectory &output);
     /** Append the resident memory after @p phase. Collective. */
     void record_memory(const std::string &phase);
 
@@ -71,6 +99,18 @@ namespace FoslsContact
     LevelVector                          solution;
     std::unique_ptr<QPSolver>            solver;
     std::unique_ptr<Monitor>             monitor;
+    std::unique_ptr<ErrorIndicators<dim>> indicators;
+    /** summary.json's fields, of the last step */
+    std::map<std::string, std::string>   summary;
+    AdaptiveSteps                        steps;
+    /** The step of the adaptive loop (0: the first, uniform mesh). */
+    unsigned int                         step = 0;
+    /** The last solution, Cartesian, carried over to the refined mesh. */
+    LevelVector                          carried;
+    /** Why the adaptive loop stopped. */
+    std::string                          adaptive_stop;
+    /** The uniform levels the definiteness check passed (ProblemChecks). */
+    std::set<unsigned int>               definite_levels;
     double                               time_setup = 0, time_solve = 0;
     std::vector<PhaseMemory>             phase_memory;
     /** What this process sent point to point during the solve. */

@@ -10,6 +10,7 @@
 #include <fosls_contact/parameters/solver.h>
 #include <fosls_contact/parameters/output.h>
 #include <fosls_contact/parameters/hertz_comparison.h>
+#include <fosls_contact/parameters/adaptivity.h>
 #include <fosls_contact/parameters/value_parsing.h>
 
 namespace FoslsContact
@@ -46,6 +47,7 @@ namespace FoslsContact
       Solver             solver;
       Output             output;
       HertzComparison    hertz;
+      Adaptivity         adaptivity;
 
       static void declare_parameters(ParameterHandler &prm);
       void        parse_parameters(ParameterHandler &prm);

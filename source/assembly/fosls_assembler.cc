@@ -111,9 +111,9 @@ namespace FoslsContact
 
   template <int dim>
   void
-  FoslsAssembler<dim>::cell_terms(const typename DoFHandler<dim>::level_cell_iterator &cell,
-                                  AssemblyScratch<dim> &                              scratch,
-                                  AssemblyCopy &                                      copy) const
+  FoslsAssembler<dim>::cell_terms(const typename Triangulation<dim>::cell_iterator &cell,
+                                  AssemblyScratch<dim> &                           scratch,
+                                  AssemblyCopy &                                   copy) const
   {
     const auto &       scene = discretization.get_scene();
     const unsigned int n     = discretization.get_fe().n_dofs_per_cell();
@@ -128,7 +128,6 @@ namespace FoslsContact
     k_const          = 0;
     r_eq             = 0;
     copy.constant_eq = 0;
-    copy.owned       = cell->is_locally_owned_on_level();
     fe_values.reinit(cell);
 
     auto &residual   = scratch.residual;
@@ -178,9 +177,9 @@ namespace FoslsContact
 
   template <int dim>
   void
-  FoslsAssembler<dim>::contact_terms(const typename DoFHandler<dim>::level_cell_iterator &cell,
-                                     AssemblyScratch<dim> &                              scratch,
-                                     AssemblyCopy &                                      copy) const
+  FoslsAssembler<dim>::contact_terms(const typename Triangulation<dim>::cell_iterator &cell,
+                                     AssemblyScratch<dim> &                           scratch,
+                                     AssemblyCopy &                                   copy) const
   {
     // Complementarity term on Gamma_C, symmetrized:
     // C_compl/2 [(u_i.n)(sigma_j n_b.n) + (u_j.n)(sigma_i n_b.n)].
@@ -225,6 +224,59 @@ namespace FoslsContact
                 }
             }
         }
+  }
+
+
+  template <int dim>
+  void
+  FoslsAssembler<dim>::eliminate_hanging(const LevelData<dim> &data, AssemblyCopy &copy) const
+  {
+    const unsigned int n = copy.dofs.size();
+    // the DoFs that remain: the cell's own unconstrained ones, then the
+    // masters of its constrained ones, each once
+    std::vector<types::global_dof_index> kept;
+    std::vector<std::vector<std::pair<unsigned int, double>>> C(n); // row -> (kept, weight)
+    const auto position = [&](const types::global_dof_index dof) {
+      const auto it = std::find(kept.begin(), kept.end(), dof);
+      if (it != kept.end())
+        return static_cast<unsigned int>(it - kept.begin());
+      kept.push_back(dof);
+      return static_cast<unsigned int>(kept.size() - 1);
+    };
+    bool constrained = false;
+    for (unsigned int i = 0; i < n; ++i)
+      constrained |= data.hanging.count(copy.dofs[i]) > 0;
+    if (!constrained)
+      return;
+    for (unsigned int i = 0; i < n; ++i)
+      if (data.hanging.count(copy.dofs[i]) == 0)
+        C[i].emplace_back(position(copy.dofs[i]), 1.);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const auto h = data.hanging.find(copy.dofs[i]);
+        if (h != data.hanging.end())
+          for (const auto &[master, weight] : h->second)
+            C[i].emplace_back(position(master), weight);
+      }
+    const unsigned int m = kept.size();
+    FullMatrix<double> Cm(n, m), tmp(m, m);
+    for (unsigned int i = 0; i < n; ++i)
+      for (const auto &[j, w] : C[i])
+        Cm(i, j) += w;
+    Vector<double> tmp_v(m);
+    for (FullMatrix<double> *k : {&copy.k_eq, &copy.k_const, &copy.k_compl})
+      {
+        tmp.triple_product(*k, Cm, Cm, true, false);
+        *k = tmp;
+      }
+    for (Vector<double> *r : {&copy.r_eq, &copy.r_compl})
+      {
+        Cm.Tvmult(tmp_v, *r);
+        *r = tmp_v;
+      }
+    copy.k_total.reinit(m, m);
+    copy.r_total.reinit(m);
+    copy.dofs = kept;
   }
 
 
@@ -281,7 +333,6 @@ namespace FoslsContact
     const auto &       fe   = discretization.get_fe();
     const auto &       data = discretization.level(level);
     const unsigned int n    = fe.n_dofs_per_cell();
-    using Iterator          = typename DoFHandler<dim>::level_cell_iterator;
 
     // The cell terms, in parallel (WorkStream); the copier adds them to
     // the global matrices one cell after the other in cell order, so the
@@ -294,17 +345,20 @@ namespace FoslsContact
     // the exception is thrown after the loop.
     std::mutex         error_mutex;
     std::exception_ptr error;
-    auto worker = [&](const Iterator &cell, AssemblyScratch<dim> &scratch, AssemblyCopy &copy) {
+    auto worker = [&](const auto &cell, AssemblyScratch<dim> &scratch, AssemblyCopy &copy) {
       copy.valid = false;
-      if (!Discretization<dim>::is_present(cell))
+      if (data.active_mesh ? cell->is_artificial() : !Discretization<dim>::is_present(cell))
         return; // no DoFs on this process
       try
         {
-          cell_terms(cell, scratch, copy);
-          contact_terms(cell, scratch, copy);
-          cell->get_mg_dof_indices(copy.dofs);
-          for (auto &dof : copy.dofs)
-            dof = data.partitioner->global_to_local(dof);
+          if (copy.dofs.size() != n) // (grown by eliminate_hanging() for another cell)
+            copy = AssemblyCopy(n);
+          copy.owned = data.owns(cell);
+          const typename Triangulation<dim>::cell_iterator tria_cell(cell);
+          cell_terms(tria_cell, scratch, copy);
+          contact_terms(tria_cell, scratch, copy);
+          data.get_local_dofs(cell, copy.dofs);
+          eliminate_hanging(data, copy);
           rotate(data, copy);
           // J = 1/2 x^T A x - b^T x + c with A = 2 K and b = 2 r.
           copy.k_total = 0;
@@ -340,7 +394,8 @@ namespace FoslsContact
     auto copier = [&](const AssemblyCopy &copy) {
       if (!copy.valid)
         return;
-      const auto &dofs = copy.dofs;
+      const auto &       dofs = copy.dofs;
+      const unsigned int n    = dofs.size();
       for (unsigned int i = 0; i < n; ++i)
         if (dofs[i] < n_owned)
           {
@@ -358,18 +413,28 @@ namespace FoslsContact
         qp.constant_eq += copy.constant_eq;
     };
 
-    const auto &dof_handler = discretization.get_dof_handler();
-    WorkStream::run(dof_handler.begin_mg(level),
-                    dof_handler.end_mg(level),
-                    worker,
-                    copier,
-                    AssemblyScratch<dim>(discretization.get_mapping(),
-                                         fe,
-                                         QGauss<dim>(3),
-                                         QGauss<dim - 1>(3)),
-                    AssemblyCopy(n));
+    const auto &               dof_handler = discretization.get_dof_handler();
+    const AssemblyScratch<dim> scratch(discretization.get_mapping(),
+                                       fe,
+                                       QGauss<dim>(3),
+                                       QGauss<dim - 1>(3));
+    if (data.active_mesh)
+      WorkStream::run(dof_handler.begin_active(),
+                      dof_handler.end(),
+                      worker,
+                      copier,
+                      scratch,
+                      AssemblyCopy(n));
+    else
+      WorkStream::run(
+        dof_handler.begin_mg(level), dof_handler.end_mg(level), worker, copier, scratch, AssemblyCopy(n));
     if (error)
       std::rethrow_exception(error);
+    // an eliminated DoF keeps a unit diagonal (it is fixed at zero), so
+    // that the matrix stays regular for the direct solvers
+    for (const auto &hanging : data.hanging)
+      if (hanging.first < n_owned)
+        qp.matrix.set(hanging.first, hanging.first, 1.);
     qp.compress_matrices();
     qp.constant_eq = Utilities::MPI::sum(qp.constant_eq, qp.get_communicator());
     qp.constant    = qp.constant_eq;

@@ -31,8 +31,8 @@ namespace FoslsContact
                                 update_quadrature_points | update_JxW_values);
     Vector<double>                       values(dim);
     std::vector<types::global_dof_index> dofs;
-    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
-      if (level_cell_is_present(cell))
+    (void)l;
+    data.for_each_cell(dof_handler, [&](const auto &cell) {
         for (const unsigned int f : cell->face_indices())
           {
             if (!cell->at_boundary(f))
@@ -114,6 +114,7 @@ namespace FoslsContact
                                                   c / area});
               }
           }
+    });
     return boundary;
   }
 

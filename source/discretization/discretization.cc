@@ -3,6 +3,8 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_raviart_thomas.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
@@ -10,6 +12,7 @@
 #include <fosls_contact/discretization/contact_entities.h>
 #include <fosls_contact/discretization/discretization.h>
 #include <fosls_contact/discretization/level_dof_numbering.h>
+#include <fosls_contact/discretization/refinement_transfer.h>
 
 #include <algorithm>
 #include <array>
@@ -52,19 +55,83 @@ namespace FoslsContact
     triangulation.refine_global(n_levels - 1);
     scene.check_cell_shapes(triangulation, comm);
 
+    n_uniform = triangulation.n_global_levels();
     dof_handler.reinit(triangulation);
+    setup_dofs_and_levels();
+  }
+
+
+  template <int dim>
+  void
+  Discretization<dim>::setup_dofs_and_levels()
+  {
     dof_handler.distribute_dofs(fe);
     dof_handler.distribute_mg_dofs();
-    for (unsigned int l = 0; l < triangulation.n_global_levels(); ++l)
+    for (unsigned int l = 0; l < n_uniform; ++l)
       dof_handler.renumber_dofs(l, LevelDoFNumbering<dim>(dof_handler).level_renumbering(l));
     active_partitioner = std::make_shared<const Utilities::MPI::Partitioner>(
       dof_handler.locally_owned_dofs(),
       DoFTools::extract_locally_relevant_dofs(dof_handler),
-      comm);
+      get_communicator());
 
-    levels.resize(triangulation.n_global_levels());
+    const bool refined = triangulation.n_global_levels() > n_uniform;
+    levels.clear();
+    levels.resize(n_uniform + (refined ? 1 : 0));
     for (unsigned int l = 0; l < levels.size(); ++l)
-      setup_level(l);
+      {
+        levels[l].level       = l;
+        levels[l].active_mesh = l == n_uniform;
+        setup_level(l);
+      }
+  }
+
+
+  template <int dim>
+  bool
+  Discretization<dim>::refine(const Vector<float> &         criteria,
+                              const Parameters::Adaptivity &adaptivity,
+                              LevelVector *                 carried)
+  {
+    AssertThrow(Utilities::MPI::n_mpi_processes(get_communicator()) == 1,
+                ExcMessage("adaptive refinement ('Adaptivity/Steps' > 0) runs on one MPI "
+                           "process"));
+    using Marking = Parameters::Adaptivity::Marking;
+    if (adaptivity.marking == Marking::bulk)
+      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_fraction(
+        triangulation, criteria, adaptivity.fraction, 0.);
+    else
+      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+        triangulation, criteria, adaptivity.fraction, 0.);
+    triangulation.prepare_coarsening_and_refinement();
+    if (adaptivity.max_dofs > 0)
+      {
+        // a bound, not an estimate: refining a cell adds at most 3^d - 2^d
+        // vertices and d 3 2^(d-1) - 2 d faces (those of its children, less
+        // its own), each with d DoFs, fewer where neighbours share them
+        // (the marks include those 2:1 balance added)
+        unsigned int marked = 0;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          marked += cell->is_locally_owned() && cell->refine_flag_set();
+        const unsigned int new_vertices = Utilities::fixed_power<dim>(3) - (1 << dim);
+        const unsigned int new_faces    = dim * 3 * (1 << (dim - 1)) - 2 * dim;
+        const double       bound        = dof_handler.n_dofs() +
+                                 double(Utilities::MPI::sum(marked, get_communicator())) *
+                                   dim * (new_vertices + new_faces);
+        if (bound > adaptivity.max_dofs)
+          {
+            for (const auto &cell : triangulation.active_cell_iterators())
+              cell->clear_refine_flag();
+            return false;
+          }
+      }
+    RefinementTransfer<dim> carry;
+    if (carried)
+      carry.prepare(dof_handler, *carried);
+    triangulation.execute_coarsening_and_refinement();
+    setup_dofs_and_levels();
+    if (carried)
+      carry.interpolate(dof_handler, mapping, active_partitioner, *carried);
+    return true;
   }
 
 
@@ -90,6 +157,8 @@ namespace FoslsContact
       BoundaryFaceConditions<dim>(scene, mapping, dof_handler).apply(l, data);
     const ContactEntities<dim> contact(scene, triangulation);
     contact.set_contact_vertices(data, boundary);
+    if (data.active_mesh)
+      eliminate_hanging_dofs(data);
     // The owner decides: a ghost vertex on the edge of the ghost layer may
     // miss a Dirichlet face of a cell that is not here.
     exchange_ghosts(data.partitioner, data.role);
@@ -103,14 +172,48 @@ namespace FoslsContact
 
   template <int dim>
   void
+  Discretization<dim>::eliminate_hanging_dofs(LevelData<dim> &data)
+  {
+    // A hanging vertex is no contact vertex and no Dirichlet vertex of its
+    // own: its values follow from its masters (which are). Boundary faces
+    // are never constrained.
+    hanging_constraints.clear();
+    hanging_constraints.reinit(DoFTools::extract_locally_relevant_dofs(dof_handler));
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
+    hanging_constraints.close();
+    for (const auto &line : hanging_constraints.get_lines())
+      if (data.partitioner->in_local_range(line.index) ||
+          data.partitioner->is_ghost_entry(line.index))
+        {
+          const auto h = data.partitioner->global_to_local(line.index);
+          auto &     masters = data.hanging[h];
+          for (const auto &[j, w] : line.entries)
+            masters.emplace_back(data.partitioner->global_to_local(j), w);
+          data.role[h]                       = DoFRole::fixed;
+          data.fixed_values.local_element(h) = 0.;
+          data.upper_bounds.local_element(h) = std::numeric_limits<double>::infinity();
+        }
+  }
+
+
+  template <int dim>
+  void
   Discretization<dim>::map_level_dofs(const unsigned int l)
   {
     LevelData<dim> &data = levels[l];
-    data.n_dofs          = dof_handler.n_dofs(l);
-    data.partitioner     = std::make_shared<const Utilities::MPI::Partitioner>(
-      dof_handler.locally_owned_mg_dofs(l),
-      DoFTools::extract_locally_relevant_level_dofs(dof_handler, l),
-      get_communicator());
+    if (data.active_mesh)
+      {
+        data.n_dofs      = dof_handler.n_dofs();
+        data.partitioner = active_partitioner;
+      }
+    else
+      {
+        data.n_dofs      = dof_handler.n_dofs(l);
+        data.partitioner = std::make_shared<const Utilities::MPI::Partitioner>(
+          dof_handler.locally_owned_mg_dofs(l),
+          DoFTools::extract_locally_relevant_level_dofs(dof_handler, l),
+          get_communicator());
+      }
     const unsigned int n_local = data.n_local();
     data.role.assign(n_local, DoFRole::free);
     data.fixed_values.reinit(data.partitioner);
@@ -124,21 +227,17 @@ namespace FoslsContact
     // (displacement component or stress row) and the vertex or face, for
     // the cells with DoFs here (owned and ghost).
     std::vector<types::global_dof_index> dofs;
-    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
-      if (is_present(cell))
+    data.for_each_cell(dof_handler, [&](const auto &cell) {
+      data.get_local_dofs(cell, dofs);
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
         {
-          data.get_local_dofs(cell, dofs);
-          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-            {
-              const auto base = fe.system_to_base_index(i);
-              if (base.first.first == 0)
-                data.vertex_dofs[cell->vertex_index(base.second)]
-                                [base.first.second] = dofs[i];
-              else
-                data.face_dofs[cell->face(base.second)->index()]
-                              [base.first.second] = dofs[i];
-            }
+          const auto base = fe.system_to_base_index(i);
+          if (base.first.first == 0)
+            data.vertex_dofs[cell->vertex_index(base.second)][base.first.second] = dofs[i];
+          else
+            data.face_dofs[cell->face(base.second)->index()][base.first.second] = dofs[i];
         }
+    });
   }
 
 
@@ -161,27 +260,37 @@ namespace FoslsContact
     std::vector<bool>  held(n_local, false);
     for (unsigned int i = 0; i < n_owned; ++i)
       held[i] = true;
-    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
-      if (cell->is_locally_owned_on_level())
+    data.for_each_cell(dof_handler, [&](const auto &cell) {
+      if (data.owns(cell))
         for (const unsigned int v : cell->vertex_indices())
           data.owned_cell_vertices.insert(cell->vertex_index(v));
-    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
-      if (is_present(cell))
-        for (const unsigned int v : cell->vertex_indices())
-          if (data.owned_cell_vertices.count(cell->vertex_index(v)))
-            for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) { held[dof] = true; });
+    });
+    data.for_each_cell(dof_handler, [&](const auto &cell) {
+      for (const unsigned int v : cell->vertex_indices())
+        if (data.owned_cell_vertices.count(cell->vertex_index(v)))
+          for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) { held[dof] = true; });
+    });
     {
+      // a cell couples its DoFs, and, with hanging nodes eliminated, the
+      // masters of its constrained DoFs (C^T A C), which may lie on the
+      // coarse neighbour
       std::vector<types::global_dof_index> dofs;
       DynamicSparsityPattern               dsp(n_local, n_local);
-      for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
-        if (is_present(cell))
+      data.for_each_cell(dof_handler, [&](const auto &cell) {
+        data.get_local_dofs(cell, dofs);
+        const std::size_t n_cell = dofs.size();
+        for (std::size_t k = 0; k < n_cell; ++k)
           {
-            data.get_local_dofs(cell, dofs);
-            for (const auto i : dofs)
-              if (held[i])
-                for (const auto j : dofs)
-                  dsp.add(i, j);
+            const auto h = data.hanging.find(dofs[k]);
+            if (h != data.hanging.end())
+              for (const auto &master : h->second)
+                dofs.push_back(master.first);
           }
+        for (const auto i : dofs)
+          if (held[i])
+            for (const auto j : dofs)
+              dsp.add(i, j);
+      });
       data.sparsity.copy_from(dsp);
     }
     std::vector<MatrixEntryImport::Entry> requests;
@@ -235,6 +344,15 @@ namespace FoslsContact
     // every owned active DoF is a DoF of an owned active cell, whose level
     // DoFs (owned or ghost) are here
     const unsigned int                   L = finest_level();
+    if (levels[L].active_mesh)
+      {
+        // the same numbering; the eliminated DoFs from their masters
+        LevelVector active(active_partitioner);
+        active.copy_locally_owned_data_from(level_vector);
+        hanging_constraints.distribute(active);
+        active.update_ghost_values();
+        return active;
+      }
     const auto &                         level_partitioner = *levels[L].partitioner;
     LevelVector                          active(active_partitioner);
     std::vector<types::global_dof_index> level_dofs(fe.n_dofs_per_cell()),

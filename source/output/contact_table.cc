@@ -40,9 +40,7 @@ namespace FoslsContact
     // read through LocalElements)
     const LocalElements                                     x_local(x);
     std::map<unsigned int, std::pair<double, unsigned int>> face_mean;
-    for (const auto &cell : discretization.get_dof_handler()
-                              .mg_cell_iterators_on_level(discretization.finest_level()))
-      if (Discretization<dim>::is_present(cell))
+    level.for_each_cell(discretization.get_dof_handler(), [&](const auto &cell) {
         for (const unsigned int f : cell->face_indices())
           if (cell->at_boundary(f) &&
               discretization.get_scene().is_contact(cell->face(f)->boundary_id()))
@@ -56,6 +54,7 @@ namespace FoslsContact
                   entry.second += 1;
                 }
             }
+    });
     std::vector<typename Row::Values> rows;
     for (const auto &cv : level.contact_vertices)
       if (cv.owned)

@@ -207,11 +207,36 @@ namespace FoslsContact
 
   template <int dim>
   void
+  Postprocessor<dim>::write_step(const LevelVector &         x,
+                                 const ErrorIndicators<dim> &indicators,
+                                 const unsigned int          step,
+                                 OutputDirectory &           output) const
+  {
+    if (!parameters.output.write_vtu)
+      return;
+    std::string error;
+    try
+      {
+        VtuOutput<dim>(discretization, parameters.material, mapping)
+          .write(x, solution_in_scene_units(x), indicators, output, step);
+      }
+    catch (const std::exception &e)
+      {
+        error = e.what();
+      }
+    // (every process learns of a failure anywhere, and publishes nothing)
+    if (Utilities::MPI::logical_or(!error.empty(), discretization.get_communicator()))
+      output.publish(error);
+  }
+
+
+  template <int dim>
+  void
   Postprocessor<dim>::write(const LevelVector &                        x,
                             const Monitor &                            monitor,
                             const std::map<std::string, std::string> &summary,
                             const std::string &                        used_parameters,
-                            const ErrorIndicators<dim> &               indicators,
+                            const std::map<std::string, std::string> &extra_files,
                             OutputDirectory &                          output) const
   {
     const MPI_Comm     comm  = discretization.get_communicator();
@@ -223,11 +248,10 @@ namespace FoslsContact
     std::string error;
     try
       {
-        if (parameters.output.write_vtu)
-          VtuOutput<dim>(discretization, parameters.material, mapping)
-            .write(x, solution_in_scene_units(x), indicators, output);
         if (rank == 0)
           {
+            for (const auto &[name, contents] : extra_files)
+              output.write(name, [&](std::ostream &out) { out << contents; });
             output.write("contact.csv", [&](std::ostream &out) { out << table; });
             output.write("convergence.csv", [&](std::ostream &out) { out << monitor.csv(); });
             output.write("used_parameters.prm",

@@ -53,7 +53,8 @@ namespace FoslsContact
   VtuOutput<dim>::write(const LevelVector &         x,
                         const LevelVector &         solution,
                         const ErrorIndicators<dim> &indicators,
-                        OutputDirectory &           output) const
+                        OutputDirectory &           output,
+                        const unsigned int          step) const
   {
     const MPI_Comm    comm     = discretization.get_communicator();
     const auto &      scene    = discretization.get_scene();
@@ -111,25 +112,33 @@ namespace FoslsContact
     data_out.build_patches(drawing, curved ? 2 : 0, DataOut<dim>::curved_boundary);
     // zlib's default level spent more time than the solve on large
     // meshes (13% of a level-8 run); best_speed files are ~10% larger
-    DataOutBase::VtkFlags flags(0. /* time */, 0 /* cycle */);
+    DataOutBase::VtkFlags flags(step /* time */, step /* cycle */);
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
+    const auto numbered = [](const std::string &name, const unsigned int s) {
+      return name + "_" + Utilities::int_to_string(s, 4);
+    };
     write_pieces(data_out,
-                 "solution_0000",
+                 numbered("solution", step),
                  "Scalars=\"von_mises\" Vectors=\"u\" Tensors=\"stress\"",
                  output);
-    // the series ParaView opens in one go: the body and, as a second part
-    // of the same step, the contact surface (a multiblock data set)
+    // the series ParaView opens in one go: for each step (an adaptive
+    // run's meshes, as time steps) the body and, as a second part of the
+    // same step, the contact surface (a multiblock data set)
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       output.write("solution.pvd", [&](std::ostream &out) {
         out << "<?xml version=\"1.0\"?>\n"
             << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-            << "  <Collection>\n"
-            << "    <DataSet timestep=\"0\" group=\"\" part=\"0\" name=\"body\" "
-               "file=\"solution_0000.pvtu\"/>\n";
-        if (scene.has_contact())
-          out << "    <DataSet timestep=\"0\" group=\"\" part=\"1\" name=\"contact surface\" "
-                 "file=\"contact_surface_0000.pvtu\"/>\n";
+            << "  <Collection>\n";
+        for (unsigned int s = 0; s <= step; ++s)
+          {
+            out << "    <DataSet timestep=\"" << s << "\" group=\"\" part=\"0\" name=\"body\" "
+                << "file=\"" << numbered("solution", s) << ".pvtu\"/>\n";
+            if (scene.has_contact())
+              out << "    <DataSet timestep=\"" << s
+                  << "\" group=\"\" part=\"1\" name=\"contact surface\" "
+                  << "file=\"" << numbered("contact_surface", s) << ".pvtu\"/>\n";
+          }
         out << "  </Collection>\n</VTKFile>\n";
       });
 
@@ -143,7 +152,10 @@ namespace FoslsContact
         // the solution's own geometry, 0 where the body touches)
         surface.build_patches(mapping);
         surface.set_flags(flags);
-        write_pieces(surface, "contact_surface_0000", "Scalars=\"contact_pressure\"", output);
+        write_pieces(surface,
+                     numbered("contact_surface", step),
+                     "Scalars=\"contact_pressure\"",
+                     output);
       }
   }
 

@@ -104,16 +104,17 @@ namespace FoslsContact
           {
             const auto &fine = discretization.level(L);
             Vector<double> values(dim);
-            for (const auto &cell : discretization.get_dof_handler()
-                                      .mg_cell_iterators_on_level(L))
-              if (Discretization<dim>::is_present(cell))
-                for (const unsigned int v : cell->vertex_indices())
-                  {
-                    scene.initial_displacement()->vector_value(cell->vertex(v), values);
-                    const auto &dofs = fine.vertex_dofs.at(cell->vertex_index(v));
-                    for (unsigned int k = 0; k < dim; ++k)
-                      solution.local_element(dofs[k]) = values[k];
-                  }
+            fine.for_each_cell(discretization.get_dof_handler(), [&](const auto &cell) {
+              for (const unsigned int v : cell->vertex_indices())
+                {
+                  scene.initial_displacement()->vector_value(cell->vertex(v), values);
+                  const auto &dofs = fine.vertex_dofs.at(cell->vertex_index(v));
+                  for (unsigned int k = 0; k < dim; ++k)
+                    solution.local_element(dofs[k]) = values[k];
+                }
+            });
+            for (const auto &hanging : fine.hanging)
+              solution.local_element(hanging.first) = 0.;
             discretization.rotate_to_normal_tangential(L, solution);
             AssertThrow(std::isfinite(solution.l2_norm()),
                         ExcMessage("parameter 'Data/Initial displacement' is not finite (NaN "

@@ -191,7 +191,7 @@ namespace FoslsContact
 
 
   template <int dim>
-  void
+  double
   RunSummary<dim>::add_hertz_comparison(Summary &                 summary,
                                         const Postprocessor<dim> &post,
                                         const Tensor<1, dim> &    force) const
@@ -207,11 +207,12 @@ namespace FoslsContact
     hertz.evaluate(force, rows);
     summary["hertz"] = hertz.json();
     pcout << hertz.report() << std::endl;
+    return hertz.relative_pressure_error();
   }
 
 
   template <int dim>
-  void
+  ErrorNorms
   RunSummary<dim>::add_errors(Summary &                 summary,
                               const Postprocessor<dim> &post,
                               const LevelVector &       cartesian) const
@@ -229,6 +230,7 @@ namespace FoslsContact
     summary["error_sigma_hdiv"] = number(e.sigma_hdiv());
     pcout << "Errors: |u - u_h|_H1 = " << std::scientific << std::setprecision(4) << e.u_h1()
           << ", |sigma - sigma_h|_Hdiv = " << e.sigma_hdiv() << std::defaultfloat << std::endl;
+    return e;
   }
 
 

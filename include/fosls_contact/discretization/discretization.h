@@ -7,11 +7,13 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
 #include <fosls_contact/discretization/level_data.h>
+#include <fosls_contact/parameters/adaptivity.h>
 #include <fosls_contact/scene/scene.h>
 
 #include <array>
@@ -32,6 +34,13 @@ namespace FoslsContact
    * active mesh, and using one numbering for every level makes the
    * multilevel hierarchy, the constraints and the assembly one code path.
    * Output maps the finest level back to the active numbering.
+   *
+   * An adaptively refined mesh (refine(), Adaptivity) adds its active mesh
+   * as the finest level, in the active numbering, with its hanging nodes
+   * eliminated (LevelData::hanging); the uniform levels below it stay.
+   * Hanging nodes need the neighbours of the coarse side of every refined
+   * face, which a ghost layer does not always hold, so adaptive refinement
+   * runs on one process.
    *
    * The mesh is a parallel::distributed::Triangulation (p4est) with
    * multigrid levels, distributed over the processes of @p comm; with one
@@ -67,8 +76,35 @@ namespace FoslsContact
     const Mapping<dim> &      get_mapping() const { return mapping; }
     const Scene<dim> &        get_scene() const { return scene; }
 
-    unsigned int n_levels() const { return triangulation.n_global_levels(); }
+    /**
+     * The levels of the algebra: the uniformly refined mesh levels and, once
+     * the mesh is refined adaptively (refine()), the active mesh as one
+     * more level on top of them.
+     */
+    unsigned int n_levels() const { return levels.size(); }
     unsigned int finest_level() const { return n_levels() - 1; }
+    /**
+     * The uniformly refined levels (Geometry/Levels); the multilevel
+     * transfer and solvers work on these.
+     */
+    unsigned int n_uniform_levels() const { return n_uniform; }
+    /** Whether the finest level is an adaptively refined active mesh. */
+    bool adaptive() const { return levels.back().active_mesh; }
+
+    /**
+     * Refine the cells marked by @p criteria (one entry per active cell,
+     * the owned ones set: eta_T^2) as @p adaptivity says, with hanging
+     * nodes, and set the levels up again: the uniform ones, and the active
+     * mesh as the finest. Returns false, refining nothing, if the refined
+     * mesh could have more than Adaptivity/Max DoFs DoFs (bounded by the
+     * vertices and faces the marked cells add). @p carried, if given, is a function on
+     * the active mesh (Cartesian, in the active numbering, with its ghost
+     * values) and is replaced by its interpolant on the refined mesh
+     * (nested spaces: the same function). Collective.
+     */
+    bool refine(const Vector<float> &         criteria,
+                const Parameters::Adaptivity &adaptivity,
+                LevelVector *                 carried = nullptr);
     const LevelData<dim> &level(const unsigned int l) const { return levels[l]; }
 
     /** h_max / h_min of the coarse mesh. */
@@ -103,6 +139,13 @@ namespace FoslsContact
      * (ContactEntities) and the coupling pattern.
      */
     void setup_level(const unsigned int l);
+    /** Distribute the DoFs, renumber the levels and set all levels up. */
+    void setup_dofs_and_levels();
+    /**
+     * The hanging-node constraints of the active mesh in local indices
+     * (LevelData::hanging), and the elimination of their DoFs.
+     */
+    void eliminate_hanging_dofs(LevelData<dim> &data);
     /**
      * The partitioner of level @p l, the arrays of its local DoFs (every
      * DoF free and unbounded) and the DoFs of every vertex and face.
@@ -127,6 +170,9 @@ namespace FoslsContact
     DoFHandler<dim>         dof_handler;
     std::vector<LevelData<dim>> levels;
     double                  coarse_ratio = 1;
+    unsigned int            n_uniform    = 0;
+    /** The active mesh's hanging-node constraints (global indices). */
+    AffineConstraints<double> hanging_constraints;
   };
 } // namespace FoslsContact
 

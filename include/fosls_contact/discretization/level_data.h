@@ -4,6 +4,7 @@
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/full_matrix.h>
 
 #include <fosls_contact/qp/algebraic_level.h>
@@ -83,15 +84,63 @@ namespace FoslsContact
   {
     LevelData() { dimension = dim; }
 
-    /** The local level DoFs of @p cell (a cell of this level). */
+    /**
+     * The level's cells: those of mesh level `level` with their level DoFs,
+     * or, for the level of an adaptively refined mesh (`active_mesh`), the
+     * active cells of all mesh levels with their active DoFs.
+     */
+    unsigned int level       = 0;
+    bool         active_mesh = false;
+
+    /** The local DoFs of @p cell (a cell of this level). */
     template <typename Iterator>
     void get_local_dofs(const Iterator &cell, std::vector<types::global_dof_index> &dofs) const
     {
       dofs.resize(cell->get_dof_handler().get_fe().n_dofs_per_cell());
-      cell->get_mg_dof_indices(dofs);
+      cell->get_active_or_mg_dof_indices(dofs);
       for (auto &dof : dofs)
         dof = partitioner->global_to_local(dof);
     }
+
+    /**
+     * Call @p f(cell) for the cells of this level with DoFs on this
+     * process (owned or ghost): a level_cell_iterator on a level of the
+     * uniform hierarchy, a cell_iterator of an active cell on the active
+     * mesh.
+     */
+    template <typename Function>
+    void for_each_cell(const DoFHandler<dim> &dof_handler, const Function &f) const
+    {
+      if (active_mesh)
+        {
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (!cell->is_artificial())
+              f(typename DoFHandler<dim>::cell_iterator(cell));
+        }
+      else
+        for (const auto &cell : dof_handler.mg_cell_iterators_on_level(level))
+          if (level_cell_is_present(cell))
+            f(cell);
+    }
+
+    /** Whether @p cell, a cell of this level, is owned by this process. */
+    template <typename Iterator>
+    static bool owns(const Iterator &cell)
+    {
+      return Iterator::AccessorType::is_level_cell() ? cell->is_locally_owned_on_level() :
+                                                       cell->is_locally_owned();
+    }
+
+    /**
+     * The hanging-node constraints of the active mesh (empty on a uniform
+     * level): a constrained DoF (local index) -> its masters and weights,
+     * in Cartesian coordinates, u_h = sum w_j u_j. A constrained DoF is
+     * eliminated: it is fixed at zero in the algebra (the matrix is
+     * C^T A C), and its value is restored from its masters for output
+     * (Discretization::to_active()).
+     */
+    std::map<types::global_dof_index, std::vector<std::pair<types::global_dof_index, double>>>
+      hanging;
 
     std::vector<RotationBlock<dim>>         rotations;
     /** For each local DoF, the index of its rotation block, or invalid. */

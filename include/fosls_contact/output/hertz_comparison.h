@@ -54,6 +54,12 @@ namespace FoslsContact
     /** Hertz's pressure at distance @p r from the contact point. */
     double pressure(const double r) const;
 
+    /**
+     * The relative l2 error of the computed pressure at the contact
+     * vertices against Hertz's (after evaluate()).
+     */
+    double relative_pressure_error() const { return pressure_error; }
+
     /** Two lines for the screen. */
     std::string report() const;
     /** The JSON object for summary.json. */

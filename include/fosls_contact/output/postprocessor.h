@@ -82,15 +82,28 @@ namespace FoslsContact
     FieldMaxima field_maxima(const LevelVector &solution) const;
 
     /**
-     * Write VTU (+pvtu), contact.csv, convergence.csv, summary.json and
-     * used_parameters.prm into @p output and publish them (collective).
-     * @p summary holds the JSON fields (already formatted values).
+     * Write the VTU pieces (+pvtu) of step @p step of the run and the pvd
+     * series of its steps so far into @p output, unless Output/Write vtu
+     * is false (collective). A failure to write stops the run on every
+     * process, with nothing published.
+     */
+    void write_step(const LevelVector &         x_rotated,
+                    const ErrorIndicators<dim> &indicators,
+                    const unsigned int          step,
+                    OutputDirectory &           output) const;
+
+    /**
+     * Write contact.csv, convergence.csv, summary.json,
+     * used_parameters.prm and the @p extra_files (name -> contents) into
+     * @p output and publish them with the VTU files of write_step()
+     * (collective). @p summary holds the JSON fields (already formatted
+     * values).
      */
     void write(const LevelVector &                        x_rotated,
                const Monitor &                            monitor,
                const std::map<std::string, std::string> &summary,
                const std::string &                        used_parameters,
-               const ErrorIndicators<dim> &               indicators,
+               const std::map<std::string, std::string> &extra_files,
                OutputDirectory &                          output) const;
 
   private:

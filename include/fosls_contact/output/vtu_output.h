@@ -31,12 +31,15 @@ namespace FoslsContact
      * StressFields, the error indicators, the contact status), and on the
      * first process the pvtu record and the pvd series; with contact, the
      * same for the ContactSurface. @p solution is @p x_rotated in the
-     * scene's units (Postprocessor::solution_in_scene_units()).
+     * scene's units (Postprocessor::solution_in_scene_units()). The files
+     * are those of step @p step of an adaptive run (solution_0000 ... );
+     * the pvd series lists the steps 0 to @p step as its time steps.
      */
     void write(const LevelVector &         x_rotated,
                const LevelVector &         solution,
                const ErrorIndicators<dim> &indicators,
-               OutputDirectory &           output) const;
+               OutputDirectory &           output,
+               const unsigned int          step) const;
 
   private:
     /**

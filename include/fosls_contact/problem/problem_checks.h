@@ -9,6 +9,8 @@
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/scene/scene.h>
 
+#include <set>
+
 namespace FoslsContact
 {
   /**
@@ -46,8 +48,12 @@ namespace FoslsContact
      * coarse_level_margin: the largest definite C_compl can only go down
      * under refinement (the spaces are nested), so passing there alone
      * would not mean passing on the finest level.
+     *
+     * @p passed (if given) holds the uniform levels that passed before in
+     * this run (an adaptive run checks once per mesh): such a level is not
+     * checked again, and one that passes now is added.
      */
-    double check_definiteness(TimerOutput &timer) const;
+    double check_definiteness(TimerOutput &timer, std::set<unsigned int> *passed = nullptr) const;
 
     /**
      * The relative margin on C_compl of a check on a coarser level than

@@ -73,12 +73,15 @@ namespace FoslsContact
                                  const LevelVector &         cartesian,
                                  const Tensor<1, dim> &      force,
                                  const ErrorIndicators<dim> &indicators) const;
-    /** The comparison with Hertz's contact pressure, for a scene that declares one. */
-    void add_hertz_comparison(Summary &                 summary,
+    /**
+     * The comparison with Hertz's contact pressure, for a scene that
+     * declares one; returns the relative l2 error of the pressure.
+     */
+    double add_hertz_comparison(Summary &                 summary,
                               const Postprocessor<dim> &post,
                               const Tensor<1, dim> &    force) const;
     /** The errors against the scene's exact solution; refuses non-finite ones. */
-    void add_errors(Summary &summary, const Postprocessor<dim> &post, const LevelVector &cartesian) const;
+    ErrorNorms add_errors(Summary &summary, const Postprocessor<dim> &post, const LevelVector &cartesian) const;
 
   private:
     const Parameters::AllParameters &parameters;

@@ -1,0 +1,69 @@
+#ifndef fosls_contact_problem_adaptive_steps_h
+#define fosls_contact_problem_adaptive_steps_h
+
+#include <deal.II/base/types.h>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace FoslsContact
+{
+  using namespace dealii;
+
+  /**
+   * What every solve of an adaptive run did, in the scene's units: the
+   * table of the adaptive loop (FoslsProblem::run()), written to
+   * summary.json ("adaptive_steps") and to adaptive_steps.csv, one row per
+   * mesh. A uniform run is one step.
+   */
+  class AdaptiveSteps
+  {
+  public:
+    struct Step
+    {
+      unsigned int            cells = 0;
+      types::global_dof_index dofs  = 0;
+      unsigned int            iterations = 0;
+      bool                    converged  = false;
+      /**
+       * J, J of the solver's start (after the first step: the previous
+       * solution carried over, projected), and the contact force (its
+       * components).
+       */
+      double                  functional = 0, functional_start = 0;
+      std::vector<double>     force;
+      /** The solve's and the whole step's wall time (set-up to output). */
+      double                  time_solve_s = 0, time_step_s = 0;
+      /** Hertz scenes: the relative l2 error of the contact pressure. */
+      double hertz_pressure_error = std::numeric_limits<double>::quiet_NaN();
+      /** Scenes with an exact solution: |u - u_h|_H1 and |sigma - sigma_h|_Hdiv. */
+      double error_u_h1       = std::numeric_limits<double>::quiet_NaN();
+      double error_sigma_hdiv = std::numeric_limits<double>::quiet_NaN();
+    };
+
+    void add(const Step &step) { steps.push_back(step); }
+    /** The wall time of the last step, from its assembly to its output. */
+    void set_step_time(const double seconds) { steps.back().time_step_s = seconds; }
+    /** The solve times of the steps so far, summed. */
+    double total_solve_time() const
+    {
+      double sum = 0;
+      for (const auto &s : steps)
+        sum += s.time_solve_s;
+      return sum;
+    }
+    unsigned int size() const { return steps.size(); }
+    const Step & back() const { return steps.back(); }
+
+    /** A JSON array of one object per step. */
+    std::string json() const;
+    /** One CSV row per step, with a header. */
+    std::string csv() const;
+
+  private:
+    std::vector<Step> steps;
+  };
+} // namespace FoslsContact
+
+#endif

@@ -1,0 +1,62 @@
+#include <fosls_contact/output/json.h>
+#include <fosls_contact/problem/adaptive_steps.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace FoslsContact
+{
+  std::string
+  AdaptiveSteps::json() const
+  {
+    std::vector<std::string> items;
+    for (unsigned int s = 0; s < steps.size(); ++s)
+      {
+        const Step &             step = steps[s];
+        std::vector<std::string> force;
+        for (const double f : step.force)
+          force.push_back(json_number(f));
+        std::ostringstream item;
+        item << "{\"step\": " << s << ", \"cells\": " << step.cells << ", \"dofs\": " << step.dofs
+             << ", \"iterations\": " << step.iterations
+             << ", \"converged\": " << (step.converged ? "true" : "false")
+             << ", \"functional\": " << json_number(step.functional)
+             << ", \"functional_start\": " << json_number(step.functional_start)
+             << ", \"contact_force\": " << json_array(force)
+             << ", \"time_solve_s\": " << json_number(step.time_solve_s)
+             << ", \"time_step_s\": " << json_number(step.time_step_s)
+             << ", \"hertz_pressure_error\": " << json_number(step.hertz_pressure_error)
+             << ", \"error_u_h1\": " << json_number(step.error_u_h1)
+             << ", \"error_sigma_hdiv\": " << json_number(step.error_sigma_hdiv) << "}";
+        items.push_back(item.str());
+      }
+    return json_array(items);
+  }
+
+
+  std::string
+  AdaptiveSteps::csv() const
+  {
+    std::ostringstream out;
+    out << "step,cells,dofs,iterations,converged,functional,sqrt_functional,functional_start";
+    const unsigned int n_force = steps.empty() ? 0 : steps[0].force.size();
+    for (unsigned int d = 0; d < n_force; ++d)
+      out << ",force_" << "xyz"[d];
+    out << ",time_solve_s,time_step_s,hertz_pressure_error,error_u_h1,error_sigma_hdiv\n";
+    out << std::setprecision(10);
+    for (unsigned int s = 0; s < steps.size(); ++s)
+      {
+        const Step &step = steps[s];
+        out << s << ',' << step.cells << ',' << step.dofs << ',' << step.iterations << ','
+            << (step.converged ? 1 : 0) << ',' << step.functional << ','
+            << std::sqrt(std::max(0., step.functional)) << ',' << step.functional_start;
+        for (const double f : step.force)
+          out << ',' << f;
+        out << ',' << step.time_solve_s << ',' << step.time_step_s << ','
+            << step.hertz_pressure_error << ',' << step.error_u_h1 << ','
+            << step.error_sigma_hdiv << '\n';
+      }
+    return out.str();
+  }
+} // namespace FoslsContact

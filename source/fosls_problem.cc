@@ -12,6 +12,7 @@
 
 #include <iomanip>
 #include <sstream>
+#include <tuple>
 
 namespace FoslsContact
 {
@@ -198,7 +199,8 @@ namespace FoslsContact
     row.time_solve_s = time_solve - steps.total_solve_time();
     if (parameters.hertz.shape != Parameters::HertzComparison::Shape::none &&
         scene.has_contact())
-      row.hertz_pressure_error = run_summary.add_hertz_comparison(summary, post, force);
+      std::tie(row.hertz_pressure_error, row.hertz_pressure_error_boundary) =
+        run_summary.add_hertz_comparison(summary, post, force);
     if (scene.has_exact_solution())
       {
         const ErrorNorms e   = run_summary.add_errors(summary, post, cartesian);

@@ -266,6 +266,7 @@ namespace FoslsContact
     Vector<double> tmp_v(m);
     for (FullMatrix<double> *k : {&copy.k_eq, &copy.k_const, &copy.k_compl})
       {
+        tmp = 0; // (triple_product() adds)
         tmp.triple_product(*k, Cm, Cm, true, false);
         *k = tmp;
       }

@@ -40,6 +40,7 @@ namespace FoslsContact
     // read through LocalElements)
     const LocalElements                                     x_local(x);
     std::map<unsigned int, std::pair<double, unsigned int>> face_mean;
+    std::map<unsigned int, double>                          share;
     level.for_each_cell(discretization.get_dof_handler(), [&](const auto &cell) {
         for (const unsigned int f : cell->face_indices())
           if (cell->at_boundary(f) &&
@@ -47,11 +48,14 @@ namespace FoslsContact
             {
               const auto   face = cell->face(f);
               const double s = x_local(level.face_dofs.at(face->index())[0]);
+              // (a face of a ghost cell too: all faces at an owned vertex count)
+              const double part = face->measure() / face->n_vertices();
               for (const unsigned int v : face->vertex_indices())
                 {
                   auto &entry = face_mean[face->vertex_index(v)];
                   entry.first += s;
                   entry.second += 1;
+                  share[face->vertex_index(v)] += part;
                 }
             }
     });
@@ -74,6 +78,7 @@ namespace FoslsContact
           row[Row::gap]      = scaling.length * cv.gap;
           row[Row::sigma_nn] = scaling.stress * snn;
           row[Row::active]   = in_contact(un, cv.gap) ? 1 : 0;
+          row[Row::share]    = std::pow(scaling.length, dim - 1) * share[cv.vertex_index];
           rows.push_back(row);
         }
     const auto all = Utilities::MPI::gather(discretization.get_communicator(), rows, 0);
@@ -95,7 +100,8 @@ namespace FoslsContact
     std::ostringstream out;
     if (Utilities::MPI::this_mpi_process(discretization.get_communicator()) != 0)
       return out.str();
-    out << (dim == 2 ? "x,y,u_x,u_y" : "x,y,z,u_x,u_y,u_z") << ",u_n,gap,sigma_nn,active\n";
+    out << (dim == 2 ? "x,y,u_x,u_y" : "x,y,z,u_x,u_y,u_z")
+        << ",u_n,gap,sigma_nn,boundary_share,active\n";
     out << std::setprecision(10);
     for (const auto &row : rows)
       {

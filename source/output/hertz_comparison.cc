@@ -73,7 +73,7 @@ namespace FoslsContact
     edge_inside  = 0;
     edge_outside = std::numeric_limits<double>::infinity();
     peak = peak_r = 0;
-    double difference = 0, norm = 0;
+    double difference = 0, norm = 0, difference_boundary = 0, norm_boundary = 0;
     for (const auto &row : rows)
       {
         Tensor<1, dim> p;
@@ -89,6 +89,9 @@ namespace FoslsContact
           }
         difference += (p_h - pressure(r)) * (p_h - pressure(r));
         norm += pressure(r) * pressure(r);
+        const double w = row[ContactRow<dim>::share];
+        difference_boundary += w * (p_h - pressure(r)) * (p_h - pressure(r));
+        norm_boundary += w * pressure(r) * pressure(r);
       }
     for (const auto &row : rows)
       {
@@ -98,7 +101,8 @@ namespace FoslsContact
         if (row[ContactRow<dim>::active] == 0 && distance(p) > edge_inside)
           edge_outside = std::min(edge_outside, distance(p));
       }
-    pressure_error = norm > 0 ? std::sqrt(difference / norm) : 0.;
+    pressure_error          = norm > 0 ? std::sqrt(difference / norm) : 0.;
+    pressure_error_boundary = norm_boundary > 0 ? std::sqrt(difference_boundary / norm_boundary) : 0.;
     // (a peak on the contact point itself, up to round-off)
     constexpr double round_off = 1e-12;
     if (peak_r < round_off * R)
@@ -121,7 +125,8 @@ namespace FoslsContact
         << "       computed: contact edge between " << edge_inside << " and "
         << edge_outside << ", peak pressure " << peak << " at r = " << peak_r
         << ", pressure error " << std::setprecision(3) << pressure_error
-        << " (relative l2 at the contact vertices)";
+        << " (relative l2 at the contact vertices), " << pressure_error_boundary
+        << " (relative L2 on the contact boundary)";
     return out.str();
   }
 
@@ -148,7 +153,7 @@ namespace FoslsContact
         << ", \"p0\": " << number(p0) << ", \"edge_inside\": " << number(edge_inside)
         << ", \"edge_outside\": " << number(edge_outside) << ", \"peak\": " << number(peak)
         << ", \"peak_r\": " << number(peak_r) << ", \"pressure_error\": " << number(pressure_error)
-        << "}";
+        << ", \"pressure_error_boundary\": " << number(pressure_error_boundary) << "}";
     return out.str();
   }
 

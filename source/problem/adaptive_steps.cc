@@ -27,6 +27,8 @@ namespace FoslsContact
              << ", \"time_solve_s\": " << json_number(step.time_solve_s)
              << ", \"time_step_s\": " << json_number(step.time_step_s)
              << ", \"hertz_pressure_error\": " << json_number(step.hertz_pressure_error)
+             << ", \"hertz_pressure_error_boundary\": "
+             << json_number(step.hertz_pressure_error_boundary)
              << ", \"error_u_h1\": " << json_number(step.error_u_h1)
              << ", \"error_sigma_hdiv\": " << json_number(step.error_sigma_hdiv) << "}";
         items.push_back(item.str());
@@ -43,7 +45,8 @@ namespace FoslsContact
     const unsigned int n_force = steps.empty() ? 0 : steps[0].force.size();
     for (unsigned int d = 0; d < n_force; ++d)
       out << ",force_" << "xyz"[d];
-    out << ",time_solve_s,time_step_s,hertz_pressure_error,error_u_h1,error_sigma_hdiv\n";
+    out << ",time_solve_s,time_step_s,hertz_pressure_error,hertz_pressure_error_boundary,"
+           "error_u_h1,error_sigma_hdiv\n";
     out << std::setprecision(10);
     for (unsigned int s = 0; s < steps.size(); ++s)
       {
@@ -54,8 +57,8 @@ namespace FoslsContact
         for (const double f : step.force)
           out << ',' << f;
         out << ',' << step.time_solve_s << ',' << step.time_step_s << ','
-            << step.hertz_pressure_error << ',' << step.error_u_h1 << ','
-            << step.error_sigma_hdiv << '\n';
+            << step.hertz_pressure_error << ',' << step.hertz_pressure_error_boundary << ','
+            << step.error_u_h1 << ',' << step.error_sigma_hdiv << '\n';
       }
     return out.str();
   }

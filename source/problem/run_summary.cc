@@ -191,7 +191,7 @@ namespace FoslsContact
 
 
   template <int dim>
-  double
+  std::pair<double, double>
   RunSummary<dim>::add_hertz_comparison(Summary &                 summary,
                                         const Postprocessor<dim> &post,
                                         const Tensor<1, dim> &    force) const
@@ -207,7 +207,7 @@ namespace FoslsContact
     hertz.evaluate(force, rows);
     summary["hertz"] = hertz.json();
     pcout << hertz.report() << std::endl;
-    return hertz.relative_pressure_error();
+    return {hertz.relative_pressure_error(), hertz.relative_pressure_error_boundary()};
   }
 
 

@@ -375,9 +375,11 @@ def check_hertz(run, label, shape, E, nu, radius, centre, normal, factor=1., axi
     @p shape, @p radius, contact point @p centre; obstacle @p normal;
     material @p E, @p nu; Force factor @p factor; for a cylinder in 3D its
     @p axis and contact @p length) as recomputed from the contact force and
-    contact.csv to 1e-8: Hertz's a and p0, the contact edge, peak and l2
-    pressure error; and Hertz's a between the last vertex in contact and
-    the next. Prints one line; returns (peak, p0, a, inside, outside)."""
+    contact.csv to 1e-8: Hertz's a and p0, the contact edge, peak, l2
+    pressure error at the vertices and L2 error on the boundary (the
+    vertices weighted by contact.csv's boundary_share); and Hertz's a
+    between the last vertex in contact and the next. Prints one line;
+    returns (peak, p0, a, inside, outside)."""
     h = run["hertz"] or {}
     dim = len(centre)
     E_star = E / (1. - nu * nu)
@@ -409,9 +411,15 @@ def check_hertz(run, label, shape, E, nu, radius, centre, normal, factor=1., axi
     peak = max(-float(x["sigma_nn"]) for x in rows)
     error = math.sqrt(sum((-float(x["sigma_nn"]) - hertz(r_of(x))) ** 2 for x in rows) /
                       sum(hertz(r_of(x)) ** 2 for x in rows))
+    # the same weighted by each vertex's share of the contact boundary
+    share = [float(x["boundary_share"]) for x in rows]
+    error_boundary = math.sqrt(
+        sum(w * (-float(x["sigma_nn"]) - hertz(r_of(x))) ** 2 for w, x in zip(share, rows)) /
+        sum(w * hertz(r_of(x)) ** 2 for w, x in zip(share, rows)))
     expected = {"force": F, "contact_modulus": E_star, "a": a, "p0": p0,
                 "edge_inside": inside, "edge_outside": outside, "peak": peak,
-                "pressure_error": error, "force_factor": factor}
+                "pressure_error": error, "pressure_error_boundary": error_boundary,
+                "force_factor": factor}
     wrong = [k for k, v in expected.items() if not relative_difference(h.get(k), v) <= 1e-8]
     check(not wrong, label + ": summary.json's hertz entries as recomputed from "
           "contact.csv to 1e-8" + (" (not: %s)" % ", ".join(wrong) if wrong else ""))

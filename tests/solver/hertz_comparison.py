@@ -3,13 +3,16 @@
 # here) declares a Hertz comparison: summary.json's "hertz" must hold
 # Hertz's half-width a = sqrt(4 F R / (pi E*)) and peak p0 = 2 F / (pi a)
 # for the computed force, with E* = E / (1 - nu^2), and the computed
-# contact edge, peak and relative l2 pressure error, all recomputed here
-# from contact.csv to 1e-8; Hertz's a must lie between the last vertex in
+# contact edge, peak, relative l2 pressure error at the contact vertices
+# and relative L2 error on the contact boundary, all recomputed here from
+# contact.csv to 1e-8 (and the vertices' shares of the boundary sum to its
+# area on the ball's flat bottom); Hertz's a must lie between the last vertex in
 # contact and the next one, the peak within 5% of p0 (measured: 4.5% on 3
 # levels, 0.4% on the shipped 4). The same for prm/ball3d.prm (a sphere, 3
 # levels) with a = (3 F R / (4 E*))^(1/3), p0 = 3 F / (2 pi a^2).
 # scripts/plot.py draws both runs: two PNG files each, exit code 0; on a
 # missing run directory one line on stderr and exit code 1.
+import csv
 import os
 import subprocess
 import sys
@@ -28,6 +31,11 @@ check(abs(peak - p0) <= 0.05 * p0, "cylinder: peak pressure within 5% of p0")
 sphere = R.run("prm/ball3d.prm", ["Geometry/Levels=3"], name="ball3d")
 check(sphere.ok() and "hertz" in sphere.summary, "ball3d: runs, summary has hertz")
 check_hertz(sphere, "sphere", "sphere", 2.5, 0.25, 2., [0., 0., 0.], [0., 0., -1.])
+# the vertices' shares of the contact boundary, the block's flat bottom
+# [-1, 1]^2, sum to its area
+with open(os.path.join(sphere.directory, "contact.csv")) as f:
+    shares = [float(row["boundary_share"]) for row in csv.DictReader(f)]
+check(abs(sum(shares) - 4.) <= 1e-12, "ball3d: the boundary shares sum to the area 4 (1e-12)")
 
 for run in (cylinder, sphere):
     out = run.directory + "_plots"

@@ -21,8 +21,15 @@ namespace FoslsContact
     static constexpr unsigned int u_n      = 2 * dim; ///< normal displacement
     static constexpr unsigned int gap      = 2 * dim + 1;
     static constexpr unsigned int sigma_nn = 2 * dim + 2; ///< mean normal traction
-    static constexpr unsigned int active   = 2 * dim + 3; ///< 1 in contact, else 0
-    static constexpr unsigned int size     = 2 * dim + 4;
+    /**
+     * The vertex's share of the contact boundary: the measure of its
+     * contact faces, each divided among its vertices (in the scene's units,
+     * length^(dim-1)); the weights of a quadrature over the contact
+     * boundary.
+     */
+    static constexpr unsigned int share    = 2 * dim + 3;
+    static constexpr unsigned int active   = 2 * dim + 4; ///< 1 in contact, else 0
+    static constexpr unsigned int size     = 2 * dim + 5;
     using Values                           = std::array<double, size>;
   };
 
@@ -45,8 +52,8 @@ namespace FoslsContact
      * One row per contact vertex of the finest level, sorted by position,
      * in the scene's units (ContactRow): the position, the displacement,
      * u_n, the gap, sigma_nn (the mean over the contact faces at the
-     * vertex) and 1 if the vertex is in contact (u_n = g), else 0. On the
-     * first process; collective.
+     * vertex), its share of the contact boundary, and 1 if the vertex is
+     * in contact (u_n = g), else 0. On the first process; collective.
      */
     std::vector<typename ContactRow<dim>::Values> rows(const LevelVector &x_rotated) const;
 

@@ -59,6 +59,14 @@ namespace FoslsContact
      * vertices against Hertz's (after evaluate()).
      */
     double relative_pressure_error() const { return pressure_error; }
+    /**
+     * The same weighted by the vertices' shares of the contact boundary
+     * (ContactRow::share): the relative L2 error on the contact boundary,
+     * by the vertex rule. The unweighted error weights every vertex alike,
+     * so a mesh refined at the edge of the contact zone counts the edge,
+     * where the pressure has its square-root behaviour, many times.
+     */
+    double relative_pressure_error_boundary() const { return pressure_error_boundary; }
 
     /** Two lines for the screen. */
     std::string report() const;
@@ -79,7 +87,7 @@ namespace FoslsContact
     double force = 0, a = 0, p0 = 0;
     /** Largest r of a vertex in contact, smallest r of one beyond it. */
     double edge_inside = 0, edge_outside = 0;
-    double peak = 0, peak_r = 0, pressure_error = 0;
+    double peak = 0, peak_r = 0, pressure_error = 0, pressure_error_boundary = 0;
   };
 } // namespace FoslsContact
 

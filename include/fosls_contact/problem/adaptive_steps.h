@@ -35,8 +35,12 @@ namespace FoslsContact
       std::vector<double>     force;
       /** The solve's and the whole step's wall time (set-up to output). */
       double                  time_solve_s = 0, time_step_s = 0;
-      /** Hertz scenes: the relative l2 error of the contact pressure. */
-      double hertz_pressure_error = std::numeric_limits<double>::quiet_NaN();
+      /**
+       * Hertz scenes: the relative error of the contact pressure, l2 at the
+       * contact vertices and L2 on the contact boundary (HertzComparison).
+       */
+      double hertz_pressure_error          = std::numeric_limits<double>::quiet_NaN();
+      double hertz_pressure_error_boundary = std::numeric_limits<double>::quiet_NaN();
       /** Scenes with an exact solution: |u - u_h|_H1 and |sigma - sigma_h|_Hdiv. */
       double error_u_h1       = std::numeric_limits<double>::quiet_NaN();
       double error_sigma_hdiv = std::numeric_limits<double>::quiet_NaN();

@@ -75,9 +75,10 @@ namespace FoslsContact
                                  const ErrorIndicators<dim> &indicators) const;
     /**
      * The comparison with Hertz's contact pressure, for a scene that
-     * declares one; returns the relative l2 error of the pressure.
+     * declares one; returns the relative errors of the pressure: l2 at
+     * the contact vertices, and L2 on the contact boundary.
      */
-    double add_hertz_comparison(Summary &                 summary,
+    std::pair<double, double> add_hertz_comparison(Summary &                 summary,
                               const Postprocessor<dim> &post,
                               const Tensor<1, dim> &    force) const;
     /** The errors against the scene's exact solution; refuses non-finite ones. */

@@ -226,25 +226,6 @@ namespace FoslsContact
 
   template <int dim>
   bool
-  FoslsProblem<dim>::adapt_further(std::string &why) const
-  {
-    const auto &adaptivity = parameters.adaptivity;
-    if (!adaptivity.enabled())
-      return false;
-    if (!monitor->converged())
-      why = "the solve did not converge";
-    else if (step == adaptivity.steps)
-      why = "Adaptivity/Steps = " + std::to_string(adaptivity.steps) + " done";
-    else if (adaptivity.target_root_functional > 0 &&
-             std::sqrt(std::max(0., steps.back().functional)) <=
-               adaptivity.target_root_functional)
-      why = "sqrt(J) at most Adaptivity/Target sqrt(J)";
-    return why.empty();
-  }
-
-
-  template <int dim>
-  bool
   FoslsProblem<dim>::refine()
   {
     TimerOutput::Scope t(timer, "Refinement");
@@ -351,7 +332,7 @@ namespace FoslsContact
         phase("Output", [&] {
           output_step(output);
           steps.set_step_time(step_wall.wall_time());
-          further = adapt_further(adaptive_stop);
+          further = steps.go_on(parameters.adaptivity, adaptive_stop);
           if (!further)
             finish(output);
         });
@@ -388,30 +369,7 @@ namespace FoslsContact
             pcout << std::endl;
           }
       }
-    if (monitor->converged())
-      return "";
-    std::ostringstream why;
-    if (monitor->stop_reason() == "stalled")
-      why << "not converged: stalled at a rate of " << std::fixed << std::setprecision(4)
-          << monitor->asymptotic_rate() << " per iteration"
-          << (parameters.solver.krylov_steps == 0 ?
-                " (the default solver, Solver/Krylov steps > 0, converges there)" :
-                "");
-    else if (monitor->stop_reason() == "diverged")
-      {
-        const auto &h = monitor->get_history();
-        const double J_unit = scene.scaling().functional(dim);
-        why << "not converged: J increased in iteration " << h.size() - 1 << " from "
-            << std::scientific << std::setprecision(3) << J_unit * h[h.size() - 2].functional.total
-            << " to " << J_unit * h.back().functional.total
-            << ", which a monotone solver's step cannot do: its multilevel model of the "
-               "functional is wrong on this mesh ('Solver/Type' = active set solves the "
-               "problem directly)";
-      }
-    else
-      why << "not converged within 'Solver/Max iterations' = "
-          << parameters.solver.max_iterations;
-    return why.str();
+    return monitor->why_not_converged();
   }
 
   template class FoslsProblem<2>;

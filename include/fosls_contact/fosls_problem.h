@@ -66,12 +66,6 @@ namespace FoslsContact
      */
     void output_step(OutputDirectory &output);
     /**
-     * Whether the adaptive loop goes on after this step (Adaptivity): not
-     * after the last step, a target reached or a solve not converged;
-     * @p why says why not.
-     */
-    bool adapt_further(std::string &why) const;
-    /**
      * Refine by the error indicators and carry the solution over to the
      * new mesh as the next step's start; false if the DoF budget stops it.
      */

@@ -7,6 +7,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <fosls_contact/assembly/fosls_assembler.h>
+#include <fosls_contact/discretization/hanging_nodes.h>
 
 namespace FoslsContact
 {
@@ -229,60 +230,6 @@ namespace FoslsContact
 
   template <int dim>
   void
-  FoslsAssembler<dim>::eliminate_hanging(const LevelData<dim> &data, AssemblyCopy &copy) const
-  {
-    const unsigned int n = copy.dofs.size();
-    // the DoFs that remain: the cell's own unconstrained ones, then the
-    // masters of its constrained ones, each once
-    std::vector<types::global_dof_index> kept;
-    std::vector<std::vector<std::pair<unsigned int, double>>> C(n); // row -> (kept, weight)
-    const auto position = [&](const types::global_dof_index dof) {
-      const auto it = std::find(kept.begin(), kept.end(), dof);
-      if (it != kept.end())
-        return static_cast<unsigned int>(it - kept.begin());
-      kept.push_back(dof);
-      return static_cast<unsigned int>(kept.size() - 1);
-    };
-    bool constrained = false;
-    for (unsigned int i = 0; i < n; ++i)
-      constrained |= data.hanging.count(copy.dofs[i]) > 0;
-    if (!constrained)
-      return;
-    for (unsigned int i = 0; i < n; ++i)
-      if (data.hanging.count(copy.dofs[i]) == 0)
-        C[i].emplace_back(position(copy.dofs[i]), 1.);
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const auto h = data.hanging.find(copy.dofs[i]);
-        if (h != data.hanging.end())
-          for (const auto &[master, weight] : h->second)
-            C[i].emplace_back(position(master), weight);
-      }
-    const unsigned int m = kept.size();
-    FullMatrix<double> Cm(n, m), tmp(m, m);
-    for (unsigned int i = 0; i < n; ++i)
-      for (const auto &[j, w] : C[i])
-        Cm(i, j) += w;
-    Vector<double> tmp_v(m);
-    for (FullMatrix<double> *k : {&copy.k_eq, &copy.k_const, &copy.k_compl})
-      {
-        tmp = 0; // (triple_product() adds)
-        tmp.triple_product(*k, Cm, Cm, true, false);
-        *k = tmp;
-      }
-    for (Vector<double> *r : {&copy.r_eq, &copy.r_compl})
-      {
-        Cm.Tvmult(tmp_v, *r);
-        *r = tmp_v;
-      }
-    copy.k_total.reinit(m, m);
-    copy.r_total.reinit(m);
-    copy.dofs = kept;
-  }
-
-
-  template <int dim>
-  void
   FoslsAssembler<dim>::rotate(const LevelData<dim> &data, AssemblyCopy &copy) const
   {
     // Change of basis R^T K R for DoFs in rotation blocks (section 4.3).
@@ -359,7 +306,14 @@ namespace FoslsContact
           cell_terms(tria_cell, scratch, copy);
           contact_terms(tria_cell, scratch, copy);
           data.get_local_dofs(cell, copy.dofs);
-          eliminate_hanging(data, copy);
+          if (eliminate_hanging_dofs_of_cell(data,
+                                             copy.dofs,
+                                             {&copy.k_eq, &copy.k_const, &copy.k_compl},
+                                             {&copy.r_eq, &copy.r_compl}))
+            {
+              copy.k_total.reinit(copy.dofs.size(), copy.dofs.size());
+              copy.r_total.reinit(copy.dofs.size());
+            }
           rotate(data, copy);
           // J = 1/2 x^T A x - b^T x + c with A = 2 K and b = 2 r.
           copy.k_total = 0;

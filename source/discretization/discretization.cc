@@ -3,15 +3,15 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_raviart_thomas.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/distributed/grid_refinement.h>
-#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <fosls_contact/discretization/boundary_face_conditions.h>
 #include <fosls_contact/discretization/contact_entities.h>
 #include <fosls_contact/discretization/discretization.h>
+#include <fosls_contact/discretization/hanging_nodes.h>
 #include <fosls_contact/discretization/level_dof_numbering.h>
+#include <fosls_contact/discretization/refinement_marking.h>
 #include <fosls_contact/discretization/refinement_transfer.h>
 
 #include <algorithm>
@@ -95,35 +95,8 @@ namespace FoslsContact
     AssertThrow(Utilities::MPI::n_mpi_processes(get_communicator()) == 1,
                 ExcMessage("adaptive refinement ('Adaptivity/Steps' > 0) runs on one MPI "
                            "process"));
-    using Marking = Parameters::Adaptivity::Marking;
-    if (adaptivity.marking == Marking::bulk)
-      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_fraction(
-        triangulation, criteria, adaptivity.fraction, 0.);
-    else
-      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
-        triangulation, criteria, adaptivity.fraction, 0.);
-    triangulation.prepare_coarsening_and_refinement();
-    if (adaptivity.max_dofs > 0)
-      {
-        // a bound, not an estimate: refining a cell adds at most 3^d - 2^d
-        // vertices and d 3 2^(d-1) - 2 d faces (those of its children, less
-        // its own), each with d DoFs, fewer where neighbours share them
-        // (the marks include those 2:1 balance added)
-        unsigned int marked = 0;
-        for (const auto &cell : triangulation.active_cell_iterators())
-          marked += cell->is_locally_owned() && cell->refine_flag_set();
-        const unsigned int new_vertices = Utilities::fixed_power<dim>(3) - (1 << dim);
-        const unsigned int new_faces    = dim * 3 * (1 << (dim - 1)) - 2 * dim;
-        const double       bound        = dof_handler.n_dofs() +
-                                 double(Utilities::MPI::sum(marked, get_communicator())) *
-                                   dim * (new_vertices + new_faces);
-        if (bound > adaptivity.max_dofs)
-          {
-            for (const auto &cell : triangulation.active_cell_iterators())
-              cell->clear_refine_flag();
-            return false;
-          }
-      }
+    if (!mark_for_refinement(triangulation, criteria, adaptivity, dof_handler.n_dofs()))
+      return false;
     RefinementTransfer<dim> carry;
     if (carried)
       carry.prepare(dof_handler, *carried);
@@ -133,10 +106,6 @@ namespace FoslsContact
       carry.interpolate(dof_handler, mapping, active_partitioner, *carried);
     return true;
   }
-
-
-
-
 
 
   template <int dim>
@@ -158,7 +127,7 @@ namespace FoslsContact
     const ContactEntities<dim> contact(scene, triangulation);
     contact.set_contact_vertices(data, boundary);
     if (data.active_mesh)
-      eliminate_hanging_dofs(data);
+      eliminate_hanging_dofs(dof_handler, hanging_constraints, data);
     // The owner decides: a ghost vertex on the edge of the ghost layer may
     // miss a Dirichlet face of a cell that is not here.
     exchange_ghosts(data.partitioner, data.role);
@@ -166,33 +135,6 @@ namespace FoslsContact
     update_ghosts(data.upper_bounds);
     contact.add_rotations(data, boundary);
     set_coupling_pattern(l);
-  }
-
-
-
-  template <int dim>
-  void
-  Discretization<dim>::eliminate_hanging_dofs(LevelData<dim> &data)
-  {
-    // A hanging vertex is no contact vertex and no Dirichlet vertex of its
-    // own: its values follow from its masters (which are). Boundary faces
-    // are never constrained.
-    hanging_constraints.clear();
-    hanging_constraints.reinit(DoFTools::extract_locally_relevant_dofs(dof_handler));
-    DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
-    hanging_constraints.close();
-    for (const auto &line : hanging_constraints.get_lines())
-      if (data.partitioner->in_local_range(line.index) ||
-          data.partitioner->is_ghost_entry(line.index))
-        {
-          const auto h = data.partitioner->global_to_local(line.index);
-          auto &     masters = data.hanging[h];
-          for (const auto &[j, w] : line.entries)
-            masters.emplace_back(data.partitioner->global_to_local(j), w);
-          data.role[h]                       = DoFRole::fixed;
-          data.fixed_values.local_element(h) = 0.;
-          data.upper_bounds.local_element(h) = std::numeric_limits<double>::infinity();
-        }
   }
 
 
@@ -239,12 +181,6 @@ namespace FoslsContact
         }
     });
   }
-
-
-
-
-
-
 
 
   template <int dim>

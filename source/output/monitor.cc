@@ -226,4 +226,30 @@ namespace FoslsContact
           << r.wall_seconds << '\n';
     return out.str();
   }
+
+
+  std::string
+  Monitor::why_not_converged() const
+  {
+    if (converged())
+      return "";
+    std::ostringstream why;
+    if (reason == "stalled")
+      why << "not converged: stalled at a rate of " << std::fixed << std::setprecision(4)
+          << asymptotic_rate() << " per iteration"
+          << (parameters.krylov_steps == 0 ?
+                " (the default solver, Solver/Krylov steps > 0, converges there)" :
+                "");
+    else if (reason == "diverged")
+      why << "not converged: J increased in iteration " << history.size() - 1 << " from "
+          << std::scientific << std::setprecision(3)
+          << functional_unit * history[history.size() - 2].functional.total << " to "
+          << functional_unit * history.back().functional.total
+          << ", which a monotone solver's step cannot do: its multilevel model of the "
+             "functional is wrong on this mesh ('Solver/Type' = active set solves the "
+             "problem directly)";
+    else
+      why << "not converged within 'Solver/Max iterations' = " << parameters.max_iterations;
+    return why.str();
+  }
 } // namespace FoslsContact

@@ -1,12 +1,31 @@
 #include <fosls_contact/output/json.h>
 #include <fosls_contact/problem/adaptive_steps.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
 
 namespace FoslsContact
 {
+  bool
+  AdaptiveSteps::go_on(const Parameters::Adaptivity &adaptivity, std::string &why) const
+  {
+    if (!adaptivity.enabled())
+      return false;
+    const unsigned int step = steps.size() - 1;
+    if (!steps.back().converged)
+      why = "the solve did not converge";
+    else if (step == adaptivity.steps)
+      why = "Adaptivity/Steps = " + std::to_string(adaptivity.steps) + " done";
+    else if (adaptivity.target_root_functional > 0 &&
+             std::sqrt(std::max(0., steps.back().functional)) <=
+               adaptivity.target_root_functional)
+      why = "sqrt(J) at most Adaptivity/Target sqrt(J)";
+    return why.empty();
+  }
+
+
   std::string
   AdaptiveSteps::json() const
   {

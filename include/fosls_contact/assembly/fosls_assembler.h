@@ -23,7 +23,8 @@ namespace FoslsContact
    * of a cell that touches a rotated vertex or face is transformed as
    * R^T K R before it is added, so the global matrix never needs a
    * triple product. On an adaptively refined mesh the hanging nodes are
-   * eliminated the same way, cell by cell, before the rotation.
+   * eliminated the same way, cell by cell, before the rotation
+   * (eliminate_hanging_dofs_of_cell()).
    *
    * Only declared effects are assembled: the body force enters only if the
    * scene has one, and the face integral over Gamma_C only with contact.
@@ -61,13 +62,7 @@ namespace FoslsContact
     void contact_terms(const typename Triangulation<dim>::cell_iterator &cell,
                        AssemblyScratch<dim> &                           scratch,
                        AssemblyCopy &                                   copy) const;
-    /**
-     * On a level with hanging nodes: the cell's terms in the DoFs that
-     * remain, C^T K C and C^T r, where C replaces each constrained DoF by
-     * its masters (LevelData::hanging); the cell's DoF list grows by the
-     * masters on the coarse neighbour.
-     */
-    void eliminate_hanging(const LevelData<dim> &data, AssemblyCopy &copy) const;
+
     /** The cell's terms in the normal-tangential basis: R^T K R, R^T r. */
     void rotate(const LevelData<dim> &data, AssemblyCopy &copy) const;
 

@@ -142,11 +142,6 @@ namespace FoslsContact
     /** Distribute the DoFs, renumber the levels and set all levels up. */
     void setup_dofs_and_levels();
     /**
-     * The hanging-node constraints of the active mesh in local indices
-     * (LevelData::hanging), and the elimination of their DoFs.
-     */
-    void eliminate_hanging_dofs(LevelData<dim> &data);
-    /**
      * The partitioner of level @p l, the arrays of its local DoFs (every
      * DoF free and unbounded) and the DoFs of every vertex and face.
      */

@@ -110,6 +110,12 @@ namespace FoslsContact
      */
     const std::string &stop_reason() const { return reason; }
     /**
+     * "" if converged, else why not in a few words (the stall's rate, the
+     * iteration in which J grew, or Solver/Max iterations), for the one
+     * line the program ends with.
+     */
+    std::string why_not_converged() const;
+    /**
      * For a run that stalled: its estimated error over the stopping rule's
      * target when it stopped.
      */

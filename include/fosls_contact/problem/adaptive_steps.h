@@ -3,6 +3,8 @@
 
 #include <deal.II/base/types.h>
 
+#include <fosls_contact/parameters/adaptivity.h>
+
 #include <limits>
 #include <string>
 #include <vector>
@@ -59,6 +61,14 @@ namespace FoslsContact
     }
     unsigned int size() const { return steps.size(); }
     const Step & back() const { return steps.back(); }
+
+    /**
+     * Whether the adaptive loop goes on after the last step: not without
+     * Adaptivity, after Adaptivity/Steps refinements, once sqrt(J) is at
+     * most Adaptivity/Target sqrt(J), or after a solve that did not
+     * converge; @p why says why not.
+     */
+    bool go_on(const Parameters::Adaptivity &adaptivity, std::string &why) const;
 
     /** A JSON array of one object per step. */
     std::string json() const;

@@ -212,13 +212,21 @@ namespace FoslsContact
                                  const unsigned int          step,
                                  OutputDirectory &           output) const
   {
-    if (!parameters.output.write_vtu)
+    // an adaptive run keeps every step's contact table too (contact.csv is
+    // the last one's): the pressure on each mesh, for comparisons
+    const bool table = parameters.adaptivity.enabled() && discretization.get_scene().has_contact();
+    if (!parameters.output.write_vtu && !table)
       return;
-    std::string error;
+    const std::string csv = table ? ContactTable<dim>(discretization).csv(x) : ""; // (collective)
+    std::string       error;
     try
       {
-        VtuOutput<dim>(discretization, parameters.material, mapping)
-          .write(x, solution_in_scene_units(x), indicators, output, step);
+        if (parameters.output.write_vtu)
+          VtuOutput<dim>(discretization, parameters.material, mapping)
+            .write(x, solution_in_scene_units(x), indicators, output, step);
+        if (table && Utilities::MPI::this_mpi_process(discretization.get_communicator()) == 0)
+          output.write("contact_" + Utilities::int_to_string(step, 4) + ".csv",
+                       [&](std::ostream &out) { out << csv; });
       }
     catch (const std::exception &e)
       {

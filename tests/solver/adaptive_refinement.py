@@ -22,8 +22,8 @@
 #   manufactured solution J and the H1 and H(div) errors fall with every
 #   step;
 # - the files: one VTU per step, solution.pvd with every step as a time
-#   step, adaptive_steps.csv with one row per step, summary.json's
-#   "adaptive_steps".
+#   step, a contact table per step, adaptive_steps.csv with one row per
+#   step, summary.json's "adaptive_steps".
 import csv
 import os
 import re
@@ -64,6 +64,10 @@ def check_files(run, label, n_steps, contact=True):
         check(len(surfaces) == n_steps and
               all(os.path.exists(os.path.join(d, f)) for f in surfaces),
               label + ": solution.pvd lists %d contact surfaces" % n_steps)
+        tables = [os.path.join(d, "contact_%04d.csv" % s) for s in range(n_steps)]
+        check(all(os.path.exists(t) for t in tables) and
+              open(tables[-1]).read() == open(os.path.join(d, "contact.csv")).read(),
+              label + ": a contact table per step, the last one is contact.csv")
 
 
 def check_steps(run, label, n_steps):

@@ -84,7 +84,8 @@ namespace FoslsContact
     /**
      * Write the VTU pieces (+pvtu) of step @p step of the run and the pvd
      * series of its steps so far into @p output, unless Output/Write vtu
-     * is false (collective). A failure to write stops the run on every
+     * is false, and for an adaptive run with contact the step's contact
+     * table, contact_<step>.csv (collective). A failure to write stops the run on every
      * process, with nothing published.
      */
     void write_step(const LevelVector &         x_rotated,

@@ -39,7 +39,8 @@ TIMEOUT = 60
 # valid values that would make a case slow (big meshes, many iterations)
 SAFE_MAX = {"Levels": 3, "Box subdivisions": 4, "Coarse refinements": 3, "Length subdivisions": 4,
             "Threads": 4, "Max iterations": 50, "Pre smoothing": 5, "Post smoothing": 5,
-            "Krylov steps": 50, "Definiteness check max dofs": 20000}
+            "Krylov steps": 50, "Definiteness check max dofs": 20000,
+            "Steps": 4}
 NUMBERS = ["0", "-0", "1", "-1", "0.5", "1e-300", "1e300", "1e308", "1e309", "-1e309",
            "nan", "NaN", "inf", "-inf", "infinity", "abc", "", " ", "1e", "0x10", "1.5.2",
            "99999999999999999999", "2147483648", "-2147483649", "1,2", "{1}", "1 2",

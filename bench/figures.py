@@ -15,13 +15,22 @@ output with matplotlib (no ParaView needed):
                                          levels): the contact pressure on the
                                          bottom face, with Hertz's contact circle
 
-    bench/figures.py            # runs the four scenes (about a minute)
+  doc/figures/adaptive_hertz.png         the half disc refined adaptively
+                                         (prm/hertz_adaptive.prm, up to 30,000
+                                         DoFs): the mesh coloured by the error
+                                         indicator, the contact zone magnified
+  doc/figures/adaptive_l_shape.png       the L-shape refined adaptively
+                                         (prm/l_shape_singular.prm): the same,
+                                         the re-entrant corner magnified
+
+    bench/figures.py            # runs the six scenes (about two minutes)
 
 The runs go to bench/results/figures_<scene>/.
 """
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 
@@ -176,6 +185,73 @@ def ball(plt):
     plt.close(fig)
 
 
+def last_step(out):
+    """The pieces of the last step of an adaptive run (solution.pvd lists
+    them as time steps)."""
+    with open(os.path.join(out, "solution.pvd")) as f:
+        files = re.findall(r'name="body" file="(solution_\d{4}\.pvtu)"', f.read())
+    return vtu.read_record(os.path.join(out, files[-1]))[1]
+
+
+def mesh_panel(ax, collections, pieces, xlim, ylim, title):
+    """The mesh of @p pieces coloured by log10 of the error indicator."""
+    import matplotlib.colors as colors
+    xs, ys, eta, tris = triangles(pieces, "error_indicator")
+    t = ax.tripcolor(xs, ys, tris, [max(e, 1e-30) for e in eta], cmap="viridis",
+                     norm=colors.LogNorm(vmin=max(min(eta), max(eta) * 1e-4), vmax=max(eta)))
+    ax.add_collection(collections.LineCollection(cell_edges(pieces), colors="k",
+                                                 linewidths=0.15, alpha=0.6))
+    ax.set_xlim(*xlim)
+    ax.set_ylim(*ylim)
+    ax.set_aspect("equal")
+    ax.set_title(title, fontsize=9)
+    return t
+
+
+def adaptive(plt, collections):
+    """The adaptive meshes: the half disc (hertz_adaptive.prm up to 30,000
+    DoFs) and the L-shape (l_shape_singular.prm, 10 steps)."""
+    out, s, _ = run("hertz_adaptive", "hertz_adaptive.prm",
+                    ["Adaptivity/Max DoFs=30000", "Output/Write vtu=true"])
+    pieces = last_step(out)
+    hertz, last = s["hertz"], s["adaptive_steps"][-1]
+    cx, cy = hertz["contact_point"]
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(11, 4.4))
+    mesh_panel(ax, collections, pieces, (cx - 0.5, cx + 0.5), (cy, cy + 0.5),
+               "half disc after %d adaptive steps: %d cells, %d DoFs\n"
+               "cells coloured by the error indicator eta_T (log scale)"
+               % (last["step"], last["cells"], last["dofs"]))
+    zoom = 2.5 * hertz["a"]
+    t = mesh_panel(bx, collections, pieces, (cx - zoom, cx + zoom), (cy, cy + zoom),
+                   "at the contact zone: Hertz's half-width a = %.4g (dashed),\n"
+                   "vertices in contact (dots); pressure L2 error %.4f"
+                   % (hertz["a"], hertz["pressure_error_boundary"]))
+    rows = [r for r in contact_rows(out) if float(r["active"]) > 0.5]
+    bx.plot([float(r["x"]) for r in rows], [float(r["y"]) for r in rows], "o", color="tab:red",
+            ms=2.5)
+    for x in (cx - hertz["a"], cx + hertz["a"]):
+        bx.axvline(x, ls="--", color="tab:red", lw=0.8)
+    fig.colorbar(t, ax=bx, label="eta_T")
+    fig.tight_layout()
+    fig.savefig(os.path.join(FIG, "adaptive_hertz.png"), dpi=110)
+    plt.close(fig)
+
+    out, s, _ = run("l_shape", "l_shape_singular.prm", ["Output/Write vtu=true"])
+    pieces = last_step(out)
+    last = s["adaptive_steps"][-1]
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(10, 4.6))
+    mesh_panel(ax, collections, pieces, (-1, 1), (-1, 1),
+               "L-shape after %d adaptive steps: %d cells, %d DoFs\n"
+               "cells coloured by the error indicator eta_T (log scale)"
+               % (last["step"], last["cells"], last["dofs"]))
+    t = mesh_panel(bx, collections, pieces, (-0.05, 0.05), (-0.05, 0.05),
+                   "the re-entrant corner, magnified 20 times")
+    fig.colorbar(t, ax=bx, label="eta_T")
+    fig.tight_layout()
+    fig.savefig(os.path.join(FIG, "adaptive_l_shape.png"), dpi=110)
+    plt.close(fig)
+
+
 def main():
     import matplotlib
     matplotlib.use("Agg")
@@ -189,7 +265,9 @@ def main():
     hertz_like(plt, collections, "steel_cylinder", "steel_cylinder.prm", [], 6., " [mm]",
                " [MPa]", "steel roller (R = 50 mm), 4 levels, Grading 3")
     ball(plt)
-    print("wrote doc/figures/solution_{square,hertz,steel_cylinder,ball3d}.png")
+    adaptive(plt, collections)
+    print("wrote doc/figures/solution_{square,hertz,steel_cylinder,ball3d}.png and "
+          "adaptive_{hertz,l_shape}.png")
 
 
 if __name__ == "__main__":

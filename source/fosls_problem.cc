@@ -256,8 +256,10 @@ namespace FoslsContact
     for (const auto &hanging : fine.hanging)
       solution.local_element(hanging.first) = 0.;
     discretization->rotate_to_normal_tangential(L, solution);
+    // the new boundary vertices of a refined mesh take the Dirichlet data
+    // and the contact bounds there, which the interpolant need not meet
     pcout << "Initial guess: the solution on the previous mesh, interpolated; it violates "
-             "the contact constraints by "
+             "the constraints (Dirichlet values, contact bounds) by "
           << std::scientific << std::setprecision(3)
           << qp.max_violation(solution) * scene.scaling().length << std::defaultfloat
           << " (projected onto them)" << std::endl;

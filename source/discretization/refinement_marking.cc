@@ -3,6 +3,9 @@
 
 #include <fosls_contact/discretization/refinement_marking.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace FoslsContact
 {
   template <int dim>
@@ -17,8 +20,16 @@ namespace FoslsContact
       parallel::distributed::GridRefinement::refine_and_coarsen_fixed_fraction(
         triangulation, criteria, adaptivity.fraction, 0.);
     else
-      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
-        triangulation, criteria, adaptivity.fraction, 0.);
+      {
+        // deal.II marks floor(fraction N) cells, none for a fraction below
+        // 1/N, and the loop would solve on the same mesh again: mark
+        // ceil(fraction N) (the half keeps the floor of the product above
+        // the round-off)
+        const double n      = triangulation.n_global_active_cells();
+        const double marked = std::ceil(adaptivity.fraction * n - 1e-9);
+        parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+          triangulation, criteria, std::min(1., (marked + 0.5) / n), 0.);
+      }
     triangulation.prepare_coarsening_and_refinement();
     if (adaptivity.max_dofs == 0)
       return true;

@@ -24,7 +24,7 @@ namespace FoslsContact
                         Patterns::Selection("bulk|fixed fraction"),
                         "bulk (Dörfler): refine the fewest cells whose eta_T^2 sum to at "
                         "least Fraction times J; fixed fraction: refine the Fraction of the "
-                        "cells with the largest eta_T.");
+                        "cells with the largest eta_T (rounded up: at least one cell).");
       prm.declare_entry("Fraction",
                         "0.5",
                         Patterns::Double(0, 1),

@@ -32,7 +32,7 @@ namespace FoslsContact
   void
   ConstrainedQP::compress_matrices()
   {
-    zero_round_off(matrix, partitioner, round_off_drop);
+    zero_round_off(matrix, partitioner, round_off_drop, &matrix_eq);
     ghost_rows->import_into(matrix);
     // the small parts first: the memory they free takes A's new pattern
     // (freed memory stays with the process, measured: the resident memory

@@ -10,8 +10,7 @@ namespace FoslsContact
     const std::string singular_matrix_message =
       "the sparse direct solver (Amesos KLU) found the matrix singular in floating point; "
       "the functional is too badly conditioned for double precision: check that the "
-      "'Functional weights' are not many orders of magnitude apart (measured: C_eq / "
-      "C_const = 1e40 fails)";
+      "'Functional weights' are not many orders of magnitude apart";
   } // namespace
 
   SparseDirectSolver::SparseDirectSolver()

@@ -23,25 +23,54 @@ namespace FoslsContact
   void
   zero_round_off(SparseMatrix<double> &                                     matrix,
                  const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-                 const double                                               drop)
+                 const double                                               drop,
+                 const SparseMatrix<double> *                               part)
   {
     // The rule treats a_ij and a_ji alike, so a symmetric pattern stays
     // symmetric unless one of them is within round-off of the threshold
     // (measured on A: all entries are below 1e-15 or above 1e-8 of
     // sqrt(a_ii a_jj); the patch colors do not rely on symmetry).
-    const LevelVector   d = diagonal(matrix, partitioner);
-    const LocalElements d_local(d); // (with the ghost entries: see LocalElements)
-    std::vector<double> root_diagonal(d.locally_owned_size() + partitioner->n_ghost_indices());
-    for (unsigned int i = 0; i < root_diagonal.size(); ++i)
-      root_diagonal[i] = std::sqrt(std::abs(d_local(i)));
+    Assert(part == nullptr ||
+             &part->get_sparsity_pattern() == &matrix.get_sparsity_pattern(),
+           ExcInternalError());
+    // sqrt(|diagonal of A - p|) and sqrt(|diagonal of p|), local entries
+    // (with the ghost entries: see LocalElements)
+    const unsigned int  n_local = partitioner->locally_owned_size() + partitioner->n_ghost_indices();
+    const LevelVector   a = diagonal(matrix, partitioner);
+    const LocalElements a_local(a);
+    std::vector<double> rest_root(n_local), part_root;
+    if (part != nullptr)
+      {
+        const LevelVector   p = diagonal(*part, partitioner);
+        const LocalElements p_local(p);
+        part_root.resize(n_local);
+        for (unsigned int i = 0; i < n_local; ++i)
+          {
+            part_root[i] = std::sqrt(std::abs(p_local(i)));
+            rest_root[i] = std::sqrt(std::abs(a_local(i) - p_local(i)));
+          }
+      }
+    else
+      for (unsigned int i = 0; i < n_local; ++i)
+        rest_root[i] = std::sqrt(std::abs(a_local(i)));
     for_subranges(
       0u,
       partitioner->locally_owned_size(),
       [&](const unsigned int begin, const unsigned int end) {
         for (auto i = begin; i < end; ++i)
-          for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
-            if (std::abs(e->value()) <= drop * root_diagonal[i] * root_diagonal[e->column()])
-              e->value() = 0.;
+          {
+            // (p walks the same pattern; without a part it walks A itself)
+            const SparseMatrix<double> &walked = part != nullptr ? *part : matrix;
+            auto                        p      = walked.begin(i);
+            for (auto e = matrix.begin(i); e != matrix.end(i); ++e, ++p)
+              {
+                double scale = rest_root[i] * rest_root[e->column()];
+                if (part != nullptr && p->value() != 0.)
+                  scale += part_root[i] * part_root[e->column()];
+                if (std::abs(e->value()) <= drop * scale)
+                  e->value() = 0.;
+              }
+          }
       },
       500);
   }

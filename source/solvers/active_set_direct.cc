@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace FoslsContact
@@ -196,7 +197,20 @@ namespace FoslsContact
           working[i]         = true;
         }
     LevelVector direction(partitioner), x_old;
-    for (unsigned int step = 0; step < max_steps; ++step)
+    // Each step puts a bound into the working set (t < 1) or takes one out
+    // (t = 1) and lowers J, so that a working set never comes back; in
+    // floating point, with a matrix that is not positive definite to
+    // working precision (weights many orders apart), the method can go
+    // round for ever instead (measured: C_eq = 1e40 on the square's coarse
+    // level). The bound allows ten passes over the bounds.
+    unsigned int n_bounded = 0;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      n_bounded += bounded(i);
+    const unsigned int steps =
+      std::min<std::uint64_t>(max_steps,
+                              10 * (std::uint64_t(Utilities::MPI::sum(
+                                      n_bounded, x.get_mpi_communicator())) + 10));
+    for (unsigned int step = 0; step < steps; ++step)
       {
         // towards the minimizer on the face of the working set
         for (unsigned int i = 0; i < n_owned; ++i)

@@ -13,7 +13,9 @@ namespace FoslsContact
   /**
    * Mark the active cells of @p triangulation for refinement by
    * @p criteria (one entry per active cell, the owned ones set: eta_T^2)
-   * as Adaptivity/Marking and Fraction say, with the marks that the
+   * as Adaptivity/Marking and Fraction say (fixed fraction: the
+   * ceil(Fraction N) cells of the largest eta_T, at least one), with the
+   * marks that the
    * mesh's smoothing (at most one level of difference at a vertex) adds.
    * Returns false, with no cell marked, if the refined mesh could have more
    * than Adaptivity/Max DoFs DoFs, from @p n_dofs now: a bound, not an

@@ -86,9 +86,11 @@ namespace FoslsContact
     SparsityPattern      sparsity_eq, sparsity_compl;
 
     /**
-     * Entries of A with |a_ij| <= round_off_drop sqrt(|a_ii a_jj|) are
-     * round-off of an exact zero (measured: all such entries of the
-     * assembled A are below 1e-15, all others above 1e-8) and are dropped.
+     * Entries of A below round_off_drop times the scale of the parts that
+     * couple them (zero_round_off() with the equilibrium part: at most
+     * sqrt(|a_ii a_jj|)) are round-off of an exact zero (measured on
+     * uniform meshes: all such entries are below 1e-15 of sqrt(|a_ii
+     * a_jj|), all others above 1e-8) and are dropped.
      */
     static constexpr double round_off_drop = 1e-13;
     LevelVector          rhs_eq, rhs_compl;

@@ -27,10 +27,24 @@ namespace FoslsContact
    * these are the entries that exact arithmetic makes zero: couplings that
    * cancel in the assembly of A, or in a Galerkin product of it. The
    * diagonal of the ghost columns comes from their owners.
+   *
+   * @p part, if given, is a part of @p matrix assembled on its own, on the
+   * same pattern (the equilibrium term), whose entries are exact zeros
+   * where it does not couple two DoFs. The round-off of a_ij is then
+   * bounded by the parts that have the entry: the threshold is
+   * drop (sqrt(|p_ii p_jj|) [p_ij != 0] + sqrt(|r_ii r_jj|)), r = A - p,
+   * which is at most drop sqrt(|a_ii a_jj|). This matters where the parts
+   * scale apart: the equilibrium diagonal of an RT flux grows like
+   * C_eq h^-2, the constitutive couplings of two stress rows stay O(1),
+   * so that sqrt(a_ii a_jj) 1e-13 exceeds these genuine couplings on
+   * cells of 2^-17 of the domain (an adaptive mesh at a re-entrant corner)
+   * or at level 8 with C_eq = 1e8, and dropping them made A indefinite
+   * (tests/solver/singular_corner).
    */
   void zero_round_off(SparseMatrix<double> &                                     matrix,
                       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-                      const double                                               drop);
+                      const double                                               drop,
+                      const SparseMatrix<double> *                               part = nullptr);
 
   /**
    * The diagonal of a local matrix (owned rows), with its ghost values:

@@ -221,7 +221,11 @@ def main():
               "distance from Hertz's half-space; vertex l2 error: the same with every",
               "contact vertex weighted alike (`pressure_error`), which on a mesh refined at",
               "the edge of the contact zone counts the edge, where the pressure has its",
-              "square-root behaviour, many times over.", ""]
+              "square-root behaviour, many times over.", "",
+              "Pictures of adaptive meshes, the cells coloured by eta_T:",
+              "`doc/figures/adaptive_hertz.png` (the half disc up to 30,000 DoFs) and",
+              "`doc/figures/adaptive_l_shape.png` (the L-shape after 10 steps), drawn by",
+              "`bench/figures.py`.", ""]
     for lam in ["1", "inf"]:
         material = ["Material/lambda=" + lam]
         uniform = uniform_runs(args.bin, "hertz.prm", material, range(3, args.max_level + 1),

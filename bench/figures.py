@@ -193,14 +193,14 @@ def last_step(out):
     return vtu.read_record(os.path.join(out, files[-1]))[1]
 
 
-def mesh_panel(ax, collections, pieces, xlim, ylim, title):
+def mesh_panel(ax, collections, pieces, xlim, ylim, title, linewidth=0.15):
     """The mesh of @p pieces coloured by log10 of the error indicator."""
     import matplotlib.colors as colors
     xs, ys, eta, tris = triangles(pieces, "error_indicator")
     t = ax.tripcolor(xs, ys, tris, [max(e, 1e-30) for e in eta], cmap="viridis",
                      norm=colors.LogNorm(vmin=max(min(eta), max(eta) * 1e-4), vmax=max(eta)))
     ax.add_collection(collections.LineCollection(cell_edges(pieces), colors="k",
-                                                 linewidths=0.15, alpha=0.6))
+                                                 linewidths=linewidth, alpha=0.6))
     ax.set_xlim(*xlim)
     ax.set_ylim(*ylim)
     ax.set_aspect("equal")
@@ -243,9 +243,9 @@ def adaptive(plt, collections):
     mesh_panel(ax, collections, pieces, (-1, 1), (-1, 1),
                "L-shape after %d adaptive steps: %d cells, %d DoFs\n"
                "cells coloured by the error indicator eta_T (log scale)"
-               % (last["step"], last["cells"], last["dofs"]))
-    t = mesh_panel(bx, collections, pieces, (-0.05, 0.05), (-0.05, 0.05),
-                   "the re-entrant corner, magnified 20 times")
+               % (last["step"], last["cells"], last["dofs"]), linewidth=0.4)
+    t = mesh_panel(bx, collections, pieces, (-0.01, 0.01), (-0.01, 0.01),
+                   "the re-entrant corner, magnified 100 times", linewidth=0.4)
     fig.colorbar(t, ax=bx, label="eta_T")
     fig.tight_layout()
     fig.savefig(os.path.join(FIG, "adaptive_l_shape.png"), dpi=110)
@@ -253,7 +253,11 @@ def adaptive(plt, collections):
 
 
 def main():
-    import matplotlib
+    try:
+        import matplotlib
+    except ImportError:
+        sys.exit("bench/figures.py needs matplotlib: apt-get install python3-matplotlib, "
+                 "then run it with the system's /usr/bin/python3")
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib import collections

@@ -13,12 +13,12 @@
 #   such cells (their RT fluxes have an equilibrium diagonal C_eq h^-2): J
 #   came out at a third of its cellwise sum and the solution was off; and
 #   the finite-difference divergence of the exact stress (a fixed step of
-#   1e-8 L) made the H(div) error of step 15 twice too large (index 0.24);
+#   1e-8 L) made the H(div) error of step 15 1.8 times too large (index 0.24);
 # - J, a quadratic form of the assembled matrix, agrees with the sum of
 #   its cellwise parts eta_T^2 (quadrature of the residuals): to 1e-3 on
 #   the deepest mesh (measured 1e-4), and to 1e-2 with C_eq = 1e6
-#   (measured 8e-4; with the old round-off rule J was -0.0084 against a
-#   sum of +0.0084);
+#   (measured 8e-4; a round-off rule relative to sqrt(a_ii a_jj) alone
+#   gives J = -0.0084 against a sum of +0.0084);
 # - fixed-fraction marking with a Fraction below one cell refines a cell
 #   per step (deal.II rounds the number of cells down, to none).
 import math

@@ -212,6 +212,7 @@ namespace FoslsContact
           << J.total << " (eq " << J.eq << ", const " << J.constitutive
           << ", compl " << J.complementarity << ")" << std::defaultfloat
           << std::endl;
+    run_summary.note_functional_round_off(J.total, row.functional_start, *indicators);
     if (scene.has_contact())
       {
         pcout << "Contact force =";

@@ -26,11 +26,11 @@ namespace FoslsContact
      * integration takes h a thousandth of the cell, so that the stencil
      * stays in the cell and the step follows the mesh: the fixed step of
      * the data expressions (1e-8 L) loses the derivatives of a singular
-     * exact solution on the small cells at its singularity (steps 15 and
-     * 16 of prm/l_shape_singular.prm, cells of 8e-6 L and 4e-6 L at the
-     * re-entrant corner: the H(div) error of a good solution came out 1.8
-     * and 10 times too large), and a stencil leaving the domain can cross
-     * the branch cut of an angle.
+     * exact solution on the small cells at its singularity (cells of a few
+     * 1e-6 L at the re-entrant corner of prm/l_shape_singular.prm: the
+     * H(div) error of a good solution came out several times too large,
+     * tests/solver/singular_corner), and a stencil leaving the domain can
+     * cross the branch cut of an angle.
      */
     template <int dim>
     double

@@ -201,8 +201,7 @@ namespace FoslsContact
     // (t = 1) and lowers J, so that a working set never comes back; in
     // floating point, with a matrix that is not positive definite to
     // working precision (weights many orders apart), the method can go
-    // round for ever instead (measured: C_eq = 1e40 on the square's coarse
-    // level). The bound allows ten passes over the bounds.
+    // round for ever instead. The bound allows ten passes over the bounds.
     unsigned int n_bounded = 0;
     for (unsigned int i = 0; i < n_owned; ++i)
       n_bounded += bounded(i);

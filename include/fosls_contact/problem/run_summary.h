@@ -64,6 +64,15 @@ namespace FoslsContact
     /** The problem's size and how the solver did (iterations, rates, statistics). */
     void add_solver(Summary &summary) const;
     /**
+     * Print a note if @p J (of the assembled quadratic form, in the
+     * scene's units) and the sum of its cellwise parts in @p indicators
+     * differ by more than 1e-3 relative: the form's round-off reaches J.
+     * @p J_start: J of the solve's start (a J at its round-off is no news).
+     */
+    void note_functional_round_off(const double                J,
+                                   const double                J_start,
+                                   const ErrorIndicators<dim> &indicators) const;
+    /**
      * The solution's figures in the scene's units: J and its parts, the
      * contact force, the error indicators, the largest displacement and
      * stress; returns J.

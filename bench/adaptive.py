@@ -9,8 +9,9 @@ and the estimator's efficiency index on the manufactured solutions
 corner, whose rate the adaptive loop restores),
 over the DoFs and the wall time of the whole run. The uniform runs use the
 scene's solver (the monotone multigrid), the half disc levels 3 to
---max-level; the adaptive runs refine with the active set solver until
-their DoF budget. Prints the tables and writes doc/adaptivity_results.md
+--max-level; the adaptive runs refine with their scene's solver (the
+monotone multigrid on the levels of the adaptive mesh; active set on the
+manufactured solution) until their DoF budget. Prints the tables and writes doc/adaptivity_results.md
 (the runs' output under bench/results/adaptive/).
 
 For the target "1% pressure error with at most 1/10 of the DoFs and 1/5 of
@@ -98,7 +99,7 @@ def adaptive_run(binary, prm, settings, tag, error_of, second_of=lambda s: float
         elapsed += step["time_step_s"]
         rows.append({"step": step["step"], "dofs": step["dofs"], "error": error_of(step),
                      "second": second_of(step), "wall": elapsed, "solve": step["time_solve_s"],
-                     "iterations": step["iterations"],
+                     "iterations": step["iterations"], "cycles": step["cycles"],
                      "sqrt_J": math.sqrt(max(0., step["functional"]))})
     return rows, wall, s["peak_rss_mb"], s["adaptive_stop"]
 
@@ -109,12 +110,12 @@ def tables(uniform, adaptive, error_name, second_name):
     out += ["| %d | %d | %.4g | %.4g | %.2f | %.2f | %.0f |" % (
         u["level"], u["dofs"], u["error"], u["second"], u["wall"], u["solve"], u["peak_mb"])
         for u in uniform]
-    out += ["", "| adaptive step | DoFs | %s | %s | sqrt(J) | active set iterations |"
+    out += ["", "| adaptive step | DoFs | %s | %s | sqrt(J) | iterations | cycles |"
             " wall so far (s) | solve (s) |" % (error_name, second_name),
-            "|---|---|---|---|---|---|---|---|"]
-    out += ["| %d | %d | %.4g | %.4g | %.3e | %d | %.2f | %.2f |" % (
-        a["step"], a["dofs"], a["error"], a["second"], a["sqrt_J"], a["iterations"], a["wall"],
-        a["solve"]) for a in adaptive]
+            "|---|---|---|---|---|---|---|---|---|"]
+    out += ["| %d | %d | %.4g | %.4g | %.3e | %d | %d | %.2f | %.2f |" % (
+        a["step"], a["dofs"], a["error"], a["second"], a["sqrt_J"], a["iterations"],
+        a["cycles"], a["wall"], a["solve"]) for a in adaptive]
     return out
 
 
@@ -211,9 +212,11 @@ def main():
               "Uniform against adaptive refinement (`Adaptivity`, `doc/method.md` §9.1).",
               "Uniform runs use the scene's solver (the monotone multigrid); adaptive runs",
               "start on the scene's coarse levels, mark by Dörfler (theta = 0.5) with the",
-              "cellwise parts of J and solve with the active set solver, the one solver",
-              "adaptive runs have. Wall: the whole run (every step of an adaptive run,",
-              "set-up and output included; `wall so far` sums the steps), one process, one",
+              "cellwise parts of J and solve with the monotone multigrid on the levels of",
+              "the adaptive mesh (`doc/method.md` §9.1; `bench/adaptive_solvers.py` compares",
+              "it with the active set solver on the same meshes; the manufactured solution",
+              "and the L-shape use the active set solver of their scenes). Wall: the whole",
+              "run (every step of an adaptive run, set-up and output included; `wall so far` sums the steps), one process, one",
               "run each, on a 2-core machine. Pressure L2 error: the relative L2 error of",
               "the contact pressure on the contact boundary against Hertz's formula (the",
               "contact vertices weighted by their share of the boundary; `hertz`",

@@ -772,9 +772,11 @@ def adaptive_case(name):
 
 md.append("## g. Adaptive refinement (`bench/adaptive.py`)\n")
 md.append("Uniform refinement with the default solver against the adaptive loop "
-          "(`Adaptivity`, Dörfler theta = 0.5, the active set solver); one run each. "
-          "The full tables, the 3D ball, the reference comparison and the estimator's "
-          "efficiency index are in `doc/adaptivity_results.md`; pictures: "
+          "(`Adaptivity`, Dörfler theta = 0.5, the monotone multigrid on the levels of "
+          "the adaptive mesh); one run each. The full tables, the 3D ball, the reference "
+          "comparison and the estimator's efficiency index are in "
+          "`doc/adaptivity_results.md`, the multigrid against the active set solver on "
+          "the same meshes in `doc/adaptive_solvers_results.md`; pictures: "
           "`doc/figures/adaptive_hertz.png`, `doc/figures/adaptive_l_shape.png`.\n")
 for lam in ["1", "inf"]:
     body = []

@@ -5,10 +5,12 @@
 #include <fosls_contact/assembly/error_indicators.h>
 #include <fosls_contact/assembly/fosls_assembler.h>
 #include <fosls_contact/fosls_problem.h>
+#include <fosls_contact/output/json.h>
 #include <fosls_contact/output/postprocessor.h>
 #include <fosls_contact/problem/initial_guess.h>
 #include <fosls_contact/problem/problem_checks.h>
 #include <fosls_contact/problem/solver_choice.h>
+#include <fosls_contact/solvers/active_set_direct.h>
 
 #include <iomanip>
 #include <sstream>
@@ -137,10 +139,13 @@ namespace FoslsContact
                                         SolverChoice<dim>::name(parameters.solver.type));
     monitor->set_functional_unit(scene.scaling().functional(dim));
     const CommunicationCounter before = communication();
+    const LevelVector          start(solution);
     solver->solve(qp, solution, *monitor);
     time_solve += wall.wall_time();
     solve_communication = {communication().exchanges - before.exchanges,
                            communication().values - before.values};
+    if (parameters.solver.cross_check)
+      cross_check(start);
 
     const KKTResidual kkt = qp.kkt_residual(solution);
     pcout << "KKT residuals: stationarity " << std::scientific
@@ -172,6 +177,31 @@ namespace FoslsContact
 
   template <int dim>
   void
+  FoslsProblem<dim>::cross_check(const LevelVector &start)
+  {
+    // the reference: the active set method from the same start, quietly;
+    // its time is not solve time
+    TimerOutput::Scope       t(timer, "Cross check");
+    const ConditionalOStream quiet(std::cout, false);
+    Monitor                  reference_monitor(qp, parameters.solver, quiet, "active set");
+    LevelVector              reference(start);
+    Timer                    wall;
+    ActiveSetDirect().solve(qp, reference, reference_monitor);
+    time_cross_check = wall.wall_time();
+    const double J = qp.value(solution), J_reference = qp.value(reference);
+    LevelVector  difference(solution);
+    difference -= reference;
+    cross_check_functional = std::abs(J - J_reference) / std::abs(J_reference);
+    cross_check_solution   = difference.linfty_norm() / reference.linfty_norm();
+    pcout << "Cross check (Solver/Cross check): the active set method's solution differs by "
+          << std::scientific << std::setprecision(2) << cross_check_solution
+          << " in the largest DoF value (relative), its J by " << cross_check_functional << " (relative)"
+          << std::defaultfloat << std::endl;
+  }
+
+
+  template <int dim>
+  void
   FoslsProblem<dim>::output_step(OutputDirectory &output)
   {
     TimerOutput::Scope    t(timer, "Output");
@@ -184,6 +214,9 @@ namespace FoslsContact
     indicators = std::make_unique<ErrorIndicators<dim>>(*discretization, parameters.weights);
     indicators->compute(solution);
     run_summary.add_solver(summary);
+    if (parameters.solver.cross_check)
+      summary["cross_check"] = "{\"functional\": " + json_number(cross_check_functional) +
+                               ", \"solution\": " + json_number(cross_check_solution) + "}";
     const FunctionalValue J = run_summary.add_solution(summary, post, cartesian, force, *indicators);
 
     AdaptiveSteps::Step row;
@@ -191,6 +224,11 @@ namespace FoslsContact
     row.dofs       = qp.size();
     row.iterations = monitor->iterations();
     row.converged  = monitor->converged();
+    row.cycles           = monitor->cycles();
+    row.cross_check_functional = cross_check_functional;
+    row.cross_check_solution   = cross_check_solution;
+    row.time_cross_check_s     = time_cross_check;
+    row.energy_increases = monitor->energy_increases();
     row.functional       = J.total;
     row.functional_start = monitor->get_history().front().functional.total *
                            scene.scaling().functional(dim);

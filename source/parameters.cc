@@ -66,9 +66,10 @@ namespace FoslsContact
         }
 
       adaptivity.parse_parameters(prm);
-      AssertThrow(!adaptivity.enabled() || solver.type == Solver::Type::active_set,
-                  ExcMessage("parameter 'Adaptivity/Steps' > 0 needs 'Solver/Type' = active "
-                             "set: the multilevel solvers run on uniformly refined meshes"));
+      AssertThrow(!adaptivity.enabled() || solver.type != Solver::Type::projected_gauss_seidel,
+                  ExcMessage("parameter 'Adaptivity/Steps' > 0 needs 'Solver/Type' = monotone "
+                             "multigrid or active set: projected gauss seidel sweeps the "
+                             "uniformly refined levels only"));
 
       boundary_conditions.parse_components(geometry.dimension);
     }

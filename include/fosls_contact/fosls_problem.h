@@ -18,6 +18,7 @@
 #include <fosls_contact/solvers/qp_solver.h>
 
 #include <map>
+#include <limits>
 #include <memory>
 #include <set>
 #include <string>
@@ -58,6 +59,12 @@ namespace FoslsContact
     void check_problem();
     void make_initial_guess();
     void setup_solver();
+    /**
+     * Solver/Cross check: solve the same problem with the active set
+     * method from @p start and compare (cross_check_functional,
+     * cross_check_solution).
+     */
+    void cross_check(const LevelVector &start);
     void solve();
     /**
      * The figures of this step's solution (summary.json's fields, printed
@@ -109,6 +116,16 @@ namespace FoslsContact
     std::vector<PhaseMemory>             phase_memory;
     /** What this process sent point to point during the solve. */
     CommunicationCounter                 solve_communication;
+    /**
+     * Solver/Cross check: J's relative difference to the active set
+     * method's solution of the same problem, and the largest difference
+     * of the two solutions' DoF values relative to the largest of that
+     * solution's (the dimensionless DoFs; NaN without the check).
+     */
+    double cross_check_functional = std::numeric_limits<double>::quiet_NaN();
+    double cross_check_solution   = std::numeric_limits<double>::quiet_NaN();
+    /** The wall time of the cross check's solve. */
+    double time_cross_check = 0;
   };
 } // namespace FoslsContact
 

@@ -109,6 +109,31 @@ namespace FoslsContact
 
 
   template <int dim>
+  void
+  Discretization<dim>::refine_as(const Triangulation<dim> &fine, const unsigned int mesh_level)
+  {
+    AssertThrow(Utilities::MPI::n_mpi_processes(get_communicator()) == 1,
+                ExcMessage("the levels of an adaptively refined mesh are built on one MPI "
+                           "process"));
+    for (;;)
+      {
+        bool flagged = false;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (static_cast<unsigned int>(cell->level()) < mesh_level &&
+              fine.create_cell_iterator(cell->id())->has_children())
+            {
+              cell->set_refine_flag();
+              flagged = true;
+            }
+        if (!flagged)
+          break;
+        triangulation.execute_coarsening_and_refinement();
+      }
+    setup_dofs_and_levels();
+  }
+
+
+  template <int dim>
   std::vector<types::global_dof_index>
   Discretization<dim>::sweep_order(const unsigned int l) const
   {
@@ -147,6 +172,12 @@ namespace FoslsContact
       {
         data.n_dofs      = dof_handler.n_dofs();
         data.partitioner = active_partitioner;
+        int coarsest = triangulation.n_global_levels();
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            coarsest = std::min(coarsest, cell->level());
+        coarsest = Utilities::MPI::min(coarsest, get_communicator());
+        data.refinement_ratio = std::pow(2., triangulation.n_global_levels() - 1 - coarsest);
       }
     else
       {

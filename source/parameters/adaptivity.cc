@@ -17,8 +17,9 @@ namespace FoslsContact
                         "is J), marks cells, refines them (hanging nodes, at most one level "
                         "of difference at a vertex), carries the solution over to the new "
                         "mesh (projected onto its contact constraints) and solves from it. "
-                        "0: uniform refinement only. Needs Solver/Type = active set and one "
-                        "MPI process.");
+                        "0: uniform refinement only. Needs one MPI process and Solver/Type = "
+                        "monotone multigrid (on one level per mesh level of the adaptive "
+                        "mesh) or active set.");
       prm.declare_entry("Marking",
                         "bulk",
                         Patterns::Selection("bulk|fixed fraction"),

@@ -44,6 +44,17 @@ namespace FoslsContact
                           "coarse_defect_checks. The iterates are the same; the solve "
                           "time and, on several processes, the communication include "
                           "the check's products with the level's matrix and P~^T.");
+        prm.declare_entry("Cross check",
+                          "false",
+                          Patterns::Bool(),
+                          "After each solve, solve the same problem again with the "
+                          "active set method (a sparse direct solver) from the same "
+                          "start, and print and write to summary.json (cross_check) "
+                          "and adaptive_steps.csv how far the two solutions are apart: "
+                          "J's relative difference and the largest difference of a DoF "
+                          "value relative to the active set solution's largest. For "
+                          "checking a solver on a mesh; the direct solves take time "
+                          "and memory (timer section 'Cross check').");
         prm.declare_entry("Definiteness check max dofs",
                           std::to_string(defaults.definiteness_max_dofs),
                           Patterns::Integer(0),
@@ -182,6 +193,7 @@ namespace FoslsContact
       linear_cycle = prm.get("Linear cycle") == "own" ? LinearCycle::own : LinearCycle::dealii;
       threads               = prm.get_integer("Threads");
       check_coarse_defects  = prm.get_bool("Check coarse defects");
+      cross_check           = prm.get_bool("Cross check");
       prm.leave_subsection();
       // without smoothing the cycle never changes the finest level's
       // oscillating part: the first correction is the coarse one, and the

@@ -49,7 +49,12 @@ namespace FoslsContact
              << ", \"hertz_pressure_error_boundary\": "
              << json_number(step.hertz_pressure_error_boundary)
              << ", \"error_u_h1\": " << json_number(step.error_u_h1)
-             << ", \"error_sigma_hdiv\": " << json_number(step.error_sigma_hdiv) << "}";
+             << ", \"error_sigma_hdiv\": " << json_number(step.error_sigma_hdiv)
+             << ", \"cycles\": " << step.cycles
+             << ", \"energy_increases\": " << step.energy_increases
+             << ", \"cross_check_functional\": " << json_number(step.cross_check_functional)
+             << ", \"cross_check_solution\": " << json_number(step.cross_check_solution)
+             << ", \"time_cross_check_s\": " << json_number(step.time_cross_check_s) << "}";
         items.push_back(item.str());
       }
     return json_array(items);
@@ -65,7 +70,8 @@ namespace FoslsContact
     for (unsigned int d = 0; d < n_force; ++d)
       out << ",force_" << "xyz"[d];
     out << ",time_solve_s,time_step_s,hertz_pressure_error,hertz_pressure_error_boundary,"
-           "error_u_h1,error_sigma_hdiv\n";
+           "error_u_h1,error_sigma_hdiv,cycles,energy_increases,cross_check_functional,"
+           "cross_check_solution,time_cross_check_s\n";
     out << std::setprecision(10);
     for (unsigned int s = 0; s < steps.size(); ++s)
       {
@@ -77,7 +83,9 @@ namespace FoslsContact
           out << ',' << f;
         out << ',' << step.time_solve_s << ',' << step.time_step_s << ','
             << step.hertz_pressure_error << ',' << step.hertz_pressure_error_boundary << ','
-            << step.error_u_h1 << ',' << step.error_sigma_hdiv << '\n';
+            << step.error_u_h1 << ',' << step.error_sigma_hdiv << ',' << step.cycles << ','
+            << step.energy_increases << ',' << step.cross_check_functional << ','
+            << step.cross_check_solution << ',' << step.time_cross_check_s << '\n';
       }
     return out.str();
   }

@@ -130,7 +130,7 @@ namespace FoslsContact
     std::vector<std::string> dofs, visits, seconds;
     for (unsigned int l = 0; l < mg->level_times.size(); ++l)
       {
-        dofs.push_back(std::to_string(discretization.level(l).n_dofs));
+        dofs.push_back(std::to_string(mg->level_dofs[l]));
         visits.push_back(std::to_string(mg->level_times[l].calls));
         seconds.push_back(number(mg->level_times[l].seconds));
       }

@@ -22,6 +22,7 @@ namespace FoslsContact
     coupling_sparsity = &level.sparsity;
     role         = level.role;
     dimension    = level.dimension;
+    refinement_ratio = level.refinement_ratio;
     fixed_values = level.fixed_values;
     upper_bounds = level.upper_bounds;
     update_ghosts(fixed_values);
@@ -204,6 +205,6 @@ namespace FoslsContact
       sum += p;
     sum = Utilities::MPI::sum(sum, get_communicator());
     return std::numeric_limits<double>::epsilon() * std::sqrt(sum) *
-           std::pow(double(x.size()), 1. / dimension);
+           std::pow(double(x.size()), 1. / dimension) * refinement_ratio;
   }
 } // namespace FoslsContact

@@ -49,40 +49,48 @@ namespace FoslsContact
 
 
   template <int dim>
-  ContactFaceRelations<dim>::ContactFaceRelations(const Discretization<dim> &discretization,
-                                                  const unsigned int         l)
+  ContactFaceRelations<dim>::ContactFaceRelations(const Discretization<dim> &coarse_mesh,
+                                                  const unsigned int         coarse_index,
+                                                  const Discretization<dim> &fine_mesh,
+                                                  const unsigned int         fine_index)
   {
-    // Contact relations between level l-1 (coarse) and l (fine), for the
+    // Contact relations between the coarse and the fine level, for the
     // coarse contact faces owned here; the entries the rerouting may give
     // for every coarse contact face with a cell here.
-    const auto &scene       = discretization.get_scene();
-    const auto &dof_handler = discretization.get_dof_handler();
-    const auto &coarse      = discretization.level(l - 1);
-    const auto &fine        = discretization.level(l);
-    auto        on_contact  = [&](const auto &cell, const unsigned int f) {
+    const auto &scene      = coarse_mesh.get_scene();
+    const auto &coarse     = coarse_mesh.level(coarse_index);
+    const auto &fine       = fine_mesh.level(fine_index);
+    const auto &fine_tria  = fine_mesh.get_triangulation();
+    const bool  same_mesh  = &coarse_mesh == &fine_mesh;
+    auto        on_contact = [&](const auto &cell, const unsigned int f) {
       return cell->at_boundary(f) && scene.is_contact(cell->face(f)->boundary_id());
     };
-    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l - 1))
-      if (Discretization<dim>::is_present(cell))
-        for (const unsigned int f : cell->face_indices())
-          if (on_contact(cell, f))
-            {
-              const auto j = coarse.face_dofs.at(cell->face(f)->index())[0];
-              for (const auto i : inside_dofs(cell, f, fine))
-                rerouting.emplace_back(i, j);
-            }
-    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l - 1))
-      if (cell->is_locally_owned_on_level())
-        for (const unsigned int f : cell->face_indices())
-          if (on_contact(cell, f))
-            faces.push_back(face_relation(cell, f, coarse, fine));
+    coarse.for_each_cell(coarse_mesh.get_dof_handler(), [&](const auto &cell) {
+      // the coarse cell on the fine level's mesh: itself on one mesh
+      const auto fine_cell =
+        same_mesh ? typename Triangulation<dim>::cell_iterator(cell) :
+                    fine_tria.create_cell_iterator(cell->id());
+      for (const unsigned int f : cell->face_indices())
+        if (on_contact(cell, f))
+          {
+            if (fine_cell->has_children())
+              {
+                const auto j = coarse.face_dofs.at(cell->face(f)->index())[0];
+                for (const auto i : inside_dofs(fine_cell, f, fine))
+                  rerouting.emplace_back(i, j);
+              }
+            if (coarse.owns(cell))
+              faces.push_back(face_relation(cell, fine_cell, f, coarse, fine));
+          }
+    });
   }
 
 
   template <int dim>
-  template <typename Iterator>
+  template <typename Iterator, typename FineIterator>
   FaceRelation
   ContactFaceRelations<dim>::face_relation(const Iterator &      cell,
+                                           const FineIterator &  fine_cell,
                                            const unsigned int    f,
                                            const LevelData<dim> &coarse,
                                            const LevelData<dim> &fine) const
@@ -94,42 +102,67 @@ namespace FoslsContact
       const auto dof = coarse.vertex_dofs.at(vertex)[0];
       return coarse.role[dof] == DoFRole::bounded ? dof : numbers::invalid_dof_index;
     };
-    const auto   face = cell->face(f);
+    const auto   face      = cell->face(f);
+    const auto   fine_face = fine_cell->face(f);
     FaceRelation frel;
     frel.coarse_dof = coarse.face_dofs.at(face->index())[0];
-    for (unsigned int c = 0; c < face->n_children(); ++c)
-      frel.sons.push_back(fine.face_dofs.at(face->child(c)->index())[0]);
+    if (!fine_cell->has_children())
+      {
+        // not refined: the face is its own son, each vertex its own coarse
+        // obstacle (an "edge" from the vertex to itself, with itself as
+        // midpoint, gives the vertex's defect obstacle in every projection)
+        frel.sons.push_back(fine.face_dofs.at(fine_face->index())[0]);
+        for (const unsigned int v : face->vertex_indices())
+          {
+            const auto self = fine_normal_dof(fine_face->vertex_index(v));
+            frel.edges.push_back({{{coarse_normal_dof(face->vertex_index(v)),
+                                    numbers::invalid_dof_index}},
+                                  {{self, self}},
+                                  self});
+          }
+        return frel;
+      }
+    for (unsigned int c = 0; c < fine_face->n_children(); ++c)
+      frel.sons.push_back(fine.face_dofs.at(fine_face->child(c)->index())[0]);
     // (all children of an owned cell are here)
-    frel.inside = inside_dofs(cell, f, fine);
-
-    // coarse contact edges of this face (the face itself in 2D)
-    std::vector<std::array<unsigned int, 3>> edges; // a, b, midpoint
+    frel.inside = inside_dofs(fine_cell, f, fine);
+    // coarse contact edges of this face (the face itself in 2D): the
+    // coarse ends by the coarse mesh's vertex numbers, the fine ends and
+    // the midpoint by the fine mesh's
+    std::vector<std::array<unsigned int, 5>> edges; // a, b (coarse), a, b, midpoint (fine)
     if (dim == 2)
-      edges.push_back(
-        {{face->vertex_index(0), face->vertex_index(1), face->child(0)->vertex_index(1)}});
+      edges.push_back({{face->vertex_index(0),
+                        face->vertex_index(1),
+                        fine_face->vertex_index(0),
+                        fine_face->vertex_index(1),
+                        fine_face->child(0)->vertex_index(1)}});
     else
       {
         for (unsigned int e = 0; e < GeometryInfo<dim>::lines_per_face; ++e)
           {
-            const auto line = face->line(e);
-            edges.push_back(
-              {{line->vertex_index(0), line->vertex_index(1), line->child(0)->vertex_index(1)}});
+            const auto line      = face->line(e);
+            const auto fine_line = fine_face->line(e);
+            edges.push_back({{line->vertex_index(0),
+                              line->vertex_index(1),
+                              fine_line->vertex_index(0),
+                              fine_line->vertex_index(1),
+                              fine_line->child(0)->vertex_index(1)}});
           }
         // the face center is the one vertex all sons share
         std::map<unsigned int, unsigned int> count;
-        for (unsigned int c = 0; c < face->n_children(); ++c)
-          for (const unsigned int v : face->child(c)->vertex_indices())
-            ++count[face->child(c)->vertex_index(v)];
+        for (unsigned int c = 0; c < fine_face->n_children(); ++c)
+          for (const unsigned int v : fine_face->child(c)->vertex_indices())
+            ++count[fine_face->child(c)->vertex_index(v)];
         for (const auto &[v, k] : count)
-          if (k == face->n_children())
+          if (k == fine_face->n_children())
             frel.fine_center = fine_normal_dof(v);
         for (const unsigned int v : face->vertex_indices())
           if (coarse_normal_dof(face->vertex_index(v)) != numbers::invalid_dof_index)
             frel.coarse_vertices.push_back(coarse_normal_dof(face->vertex_index(v)));
       }
-    for (const auto &[a, b, m] : edges)
+    for (const auto &[a, b, fa, fb, m] : edges)
       frel.edges.push_back({{{coarse_normal_dof(a), coarse_normal_dof(b)}},
-                            {{fine_normal_dof(a), fine_normal_dof(b)}},
+                            {{fine_normal_dof(fa), fine_normal_dof(fb)}},
                             fine_normal_dof(m)});
     return frel;
   }

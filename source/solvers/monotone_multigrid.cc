@@ -8,11 +8,15 @@ namespace FoslsContact
                                             const unsigned int         finest_level,
                                             const SparsityPattern &    fine_sparsity,
                                             const Parameters::Solver & parameters)
-    : hierarchy(discretization, transfer, finest_level)
+    : level_meshes(discretization.adaptive() && finest_level == discretization.finest_level() ?
+                     std::make_unique<const LevelMeshes<dim>>(discretization, transfer) :
+                     nullptr)
+    , hierarchy(level_meshes ? MultilevelHierarchy<dim>(*level_meshes) :
+                               MultilevelHierarchy<dim>(discretization, transfer, finest_level))
     , parameters(parameters)
     , fine_sparsity(&fine_sparsity)
-    , finest(finest_level)
-    , pre_smoother(finest_level + 1, parameters.pre_smoothing, false, &counters.smoothing)
+    , finest(hierarchy.finest_level())
+    , pre_smoother(finest + 1, parameters.pre_smoothing, false, &counters.smoothing)
     , post_smoother(pre_smoother, parameters.post_smoothing, true)
     // (the plain cycle reroutes the flux of partly truncated coarse faces)
     , rerouting(hierarchy, fine_sparsity, parameters.krylov_steps == 0)
@@ -33,8 +37,11 @@ namespace FoslsContact
                   cycle,
                   linear_multigrid,
                   counters,
-                  finest_level)
+                  finest)
   {
+    AssertThrow(hierarchy.level(finest).n_dofs == discretization.level(finest_level).n_dofs,
+                ExcMessage("monotone multigrid: the hierarchy's finest level is not the "
+                           "level it solves on"));
     counters.level_visits.resize(finest + 1);
   }
 
@@ -50,6 +57,8 @@ namespace FoslsContact
     SolverStatistics::Multilevel multilevel;
     for (unsigned int l = 1; l <= finest; ++l)
       multilevel.patch_colors.push_back(hierarchy.n_colors(l));
+    for (unsigned int l = 0; l <= finest; ++l)
+      multilevel.level_dofs.push_back(hierarchy.level(l).n_dofs);
     // (level l's visits include those of level l - 1)
     multilevel.level_times = counters.level_visits;
     for (unsigned int l = 1; l <= finest; ++l)

@@ -38,13 +38,39 @@ namespace FoslsContact
 
 
   template <int dim>
-  MultilevelHierarchy<dim>::MultilevelHierarchy(
-    const Discretization<dim> &discretization,
-    const LevelTransfer<dim> & transfer,
-    const unsigned int         finest_level)
-    : discretization(discretization)
-    , finest(finest_level)
+  MultilevelHierarchy<dim>::MultilevelHierarchy(const Discretization<dim> &discretization,
+                                                const LevelTransfer<dim> & transfer,
+                                                const unsigned int         finest_level)
   {
+    std::vector<Source> levels;
+    for (unsigned int l = 0; l <= finest_level; ++l)
+      levels.push_back({&discretization, l, l > 0 ? &transfer.prolongation(l) : nullptr, -1});
+    build(levels);
+  }
+
+
+  template <int dim>
+  MultilevelHierarchy<dim>::MultilevelHierarchy(const LevelMeshes<dim> &meshes)
+  {
+    std::vector<Source> levels;
+    for (unsigned int l = 0; l <= meshes.finest_level(); ++l)
+      levels.push_back({&meshes.discretization(l),
+                        meshes.index(l),
+                        l > 0 ? &meshes.prolongation(l) : nullptr,
+                        // (the finest level relaxes everywhere: its
+                        // smoother is the one that sees the true
+                        // constraints at every DoF)
+                        meshes.is_uniform(l) || l == meshes.finest_level() ? -1 : int(l)});
+    build(levels);
+  }
+
+
+  template <int dim>
+  void
+  MultilevelHierarchy<dim>::build(const std::vector<Source> &levels)
+  {
+    sources        = levels;
+    finest         = sources.size() - 1;
     const unsigned int n = finest + 1;
     rotated_sparsity.resize(n);
     rotated.resize(n);
@@ -53,30 +79,34 @@ namespace FoslsContact
     // (level 0 is solved directly: no patches)
     for (unsigned int l = 1; l < n; ++l)
       {
-        rotate_prolongation(l, transfer);
-        level_patches[l] = VertexPatches<dim>(discretization, l);
+        rotate_prolongation(l);
+        level_patches[l] = VertexPatches<dim>(*sources[l].discretization,
+                                              sources[l].index,
+                                              sources[l].local_smoothing);
       }
-    if (discretization.get_scene().has_contact())
+    if (sources[0].discretization->get_scene().has_contact())
       for (unsigned int l = 1; l < n; ++l)
-        contact_faces[l] = ContactFaceRelations<dim>(discretization, l);
+        contact_faces[l] = ContactFaceRelations<dim>(*sources[l - 1].discretization,
+                                                     sources[l - 1].index,
+                                                     *sources[l].discretization,
+                                                     sources[l].index);
   }
 
 
   template <int dim>
   void
-  MultilevelHierarchy<dim>::rotate_prolongation(const unsigned int        l,
-                                                const LevelTransfer<dim> &transfer)
+  MultilevelHierarchy<dim>::rotate_prolongation(const unsigned int l)
   {
     // R_l^{-1} P R_{l-1}, for the local fine DoFs (their coarse DoFs are
     // local: the parents of the cells here are here)
     SparsityPattern      sp_c, sp_f, sp_tmp;
     SparseMatrix<double> R_coarse, R_fine_inverse, tmp;
-    rotation_matrix(discretization.level(l - 1), false, sp_c, R_coarse);
-    rotation_matrix(discretization.level(l), true, sp_f, R_fine_inverse);
+    rotation_matrix(level(l - 1), false, sp_c, R_coarse);
+    rotation_matrix(level(l), true, sp_f, R_fine_inverse);
     sp_tmp.reinit(0, 0, 0);
     sp_tmp.compress();
     tmp.reinit(sp_tmp);
-    transfer.prolongation(l).mmult(tmp, R_coarse);
+    sources[l].prolongation->mmult(tmp, R_coarse);
     rotated_sparsity[l] = std::make_unique<SparsityPattern>();
     rotated_sparsity[l]->reinit(0, 0, 0);
     rotated_sparsity[l]->compress();

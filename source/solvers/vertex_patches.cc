@@ -128,7 +128,9 @@ namespace FoslsContact
 
 
   template <int dim>
-  VertexPatches<dim>::VertexPatches(const Discretization<dim> &discretization, const unsigned int l)
+  VertexPatches<dim>::VertexPatches(const Discretization<dim> &discretization,
+                                    const unsigned int         l,
+                                    const int                  at_cells_of_level)
   {
     // Vertex patches in the order of their VertexKey, and their colors. A
     // process relaxes the patches with a DoF it owns; their vertices are
@@ -137,18 +139,24 @@ namespace FoslsContact
     const auto &data        = discretization.level(l);
     std::map<unsigned int, VertexKey<dim>>                     key;
     std::map<unsigned int, std::set<types::global_dof_index>> patch;
-    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
-      if (Discretization<dim>::is_present(cell))
+    std::set<unsigned int>                                    relaxed;
+    data.for_each_cell(dof_handler, [&](const auto &cell) {
+      if (at_cells_of_level < 0 || cell->level() == at_cells_of_level)
         for (const unsigned int v : cell->vertex_indices())
-          {
-            const unsigned int vertex = cell->vertex_index(v);
-            if (key.count(vertex) == 0)
-              key[vertex] = vertex_key<dim>(cell, v);
-            if (data.owned_cell_vertices.count(vertex) == 0)
-              continue;
-            auto &p = patch[vertex];
-            for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) { p.insert(dof); });
-          }
+          relaxed.insert(cell->vertex_index(v));
+    });
+    data.for_each_cell(dof_handler, [&](const auto &cell) {
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          const unsigned int vertex = cell->vertex_index(v);
+          if (key.count(vertex) == 0)
+            key[vertex] = vertex_key<dim>(cell, v);
+          if (data.owned_cell_vertices.count(vertex) == 0 || relaxed.count(vertex) == 0)
+            continue;
+          auto &p = patch[vertex];
+          for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) { p.insert(dof); });
+        }
+    });
 
     // every vertex of a cell here is an item of the level scheduling
     std::vector<std::pair<VertexKey<dim>, unsigned int>> order;
@@ -164,15 +172,47 @@ namespace FoslsContact
         position[vertex] = color_dof.size();
         color_dof.push_back(data.vertex_dofs.at(vertex)[0]);
       }
-    // patches are coupled if their vertices share a cell
-    std::vector<std::vector<unsigned int>> coupled(order.size());
-    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(l))
-      if (Discretization<dim>::is_present(cell))
+    // Patches are coupled if their vertices share a cell. With hanging
+    // nodes eliminated (an adaptive mesh) a cell also couples the masters
+    // of its constrained DoFs, which lie on the coarse neighbour's face or
+    // edge: the patches of the master's vertex (a displacement DoF) or of
+    // its face's vertices (an RT DoF) are coupled with the cell's too.
+    std::map<types::global_dof_index, std::set<unsigned int>> master_vertices;
+    for (const auto &[dof, masters] : data.hanging)
+      for (const auto &master : masters)
+        master_vertices[master.first];
+    if (!master_vertices.empty())
+      data.for_each_cell(dof_handler, [&](const auto &cell) {
         for (const unsigned int v : cell->vertex_indices())
-          for (const unsigned int w : cell->vertex_indices())
-            if (v != w)
-              coupled[position[cell->vertex_index(v)]].push_back(
-                position[cell->vertex_index(w)]);
+          for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) {
+            const auto m = master_vertices.find(dof);
+            if (m != master_vertices.end())
+              m->second.insert(cell->vertex_index(v));
+          });
+      });
+    std::vector<std::vector<unsigned int>> coupled(order.size());
+    std::vector<types::global_dof_index>   dofs;
+    data.for_each_cell(dof_handler, [&](const auto &cell) {
+      std::set<unsigned int> vertices;
+      for (const unsigned int v : cell->vertex_indices())
+        vertices.insert(cell->vertex_index(v));
+      if (!master_vertices.empty())
+        {
+          data.get_local_dofs(cell, dofs);
+          for (const auto dof : dofs)
+            {
+              const auto h = data.hanging.find(dof);
+              if (h != data.hanging.end())
+                for (const auto &master : h->second)
+                  for (const unsigned int w : master_vertices.at(master.first))
+                    vertices.insert(w);
+            }
+        }
+      for (const unsigned int v : vertices)
+        for (const unsigned int w : vertices)
+          if (v != w)
+            coupled[position.at(v)].push_back(position.at(w));
+    });
     const std::vector<unsigned int> color =
       level_schedule(coupled, color_dof, data.partitioner);
 

@@ -105,6 +105,19 @@ namespace FoslsContact
     bool refine(const Vector<float> &         criteria,
                 const Parameters::Adaptivity &adaptivity,
                 LevelVector *                 carried = nullptr);
+    /**
+     * Refine this uniformly refined mesh into the mesh of @p fine with
+     * every cell finer than mesh level @p mesh_level replaced by its
+     * ancestor on that level, and set the levels up again (the active
+     * mesh as the finest). These capped meshes are the levels of the
+     * multilevel solver on an adaptively refined mesh (LevelMeshes): they
+     * are nested, and each is balanced as @p fine is (capping the levels
+     * never increases the level difference of two cells at a vertex), so
+     * p4est adds no cells. The cells are found by their CellId, refined
+     * one mesh level at a time. One process. Collective.
+     */
+    void refine_as(const Triangulation<dim> &fine, const unsigned int mesh_level);
+
     const LevelData<dim> &level(const unsigned int l) const { return levels[l]; }
 
     /** h_max / h_min of the coarse mesh. */

@@ -86,6 +86,11 @@ namespace FoslsContact
        * report the largest difference.
        */
       bool         check_coarse_defects  = false;
+      /**
+       * Solve each problem again with the active set method and report
+       * the difference (FoslsProblem::cross_check()).
+       */
+      bool         cross_check           = false;
 
       static void declare_parameters(ParameterHandler &prm);
       void        parse_parameters(ParameterHandler &prm);

@@ -27,6 +27,16 @@ namespace FoslsContact
       unsigned int            cells = 0;
       types::global_dof_index dofs  = 0;
       unsigned int            iterations = 0;
+      /**
+       * The solver's multigrid cycles (0 for the active set method) and
+       * the times J went up (Monitor).
+       */
+      unsigned int            cycles = 0, energy_increases = 0;
+      /** Solver/Cross check (FoslsProblem::cross_check()); NaN without. */
+      double cross_check_functional = std::numeric_limits<double>::quiet_NaN();
+      double cross_check_solution   = std::numeric_limits<double>::quiet_NaN();
+      /** The wall time of the cross check's solve (0 without). */
+      double time_cross_check_s = 0;
       bool                    converged  = false;
       /**
        * J, J of the solver's start (after the first step: the previous

@@ -30,6 +30,12 @@ namespace FoslsContact
     std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
     /** The space dimension of the mesh the level comes from. */
     unsigned int dimension = 0;
+    /**
+     * How many times smaller its smallest cells are than its largest, by
+     * refinement: 2^(finest - coarsest level of its cells); 1 on a
+     * uniformly refined level.
+     */
+    double refinement_ratio = 1;
 
     /** Local DoFs: owned, then ghosts. */
     unsigned int n_owned() const { return partitioner->locally_owned_size(); }

@@ -58,8 +58,18 @@ namespace FoslsContact
   struct ContactFaceRelations
   {
     ContactFaceRelations() = default;
-    /** The relations between levels @p l - 1 and @p l of @p discretization. */
-    ContactFaceRelations(const Discretization<dim> &discretization, const unsigned int l);
+    /**
+     * The relations between level @p coarse_index of @p coarse_mesh and
+     * level @p fine_index of @p fine_mesh: two consecutive levels of one
+     * discretization, or of the levels of an adaptive mesh (LevelMeshes),
+     * whose cells are matched by their CellId. A coarse contact face whose
+     * cell the fine level does not refine is its own son, and each of its
+     * vertices its own coarse obstacle.
+     */
+    ContactFaceRelations(const Discretization<dim> &coarse_mesh,
+                         const unsigned int         coarse_index,
+                         const Discretization<dim> &fine_mesh,
+                         const unsigned int         fine_index);
 
     /** Coarse contact faces of level l - 1 owned here. */
     std::vector<FaceRelation> faces;
@@ -71,9 +81,14 @@ namespace FoslsContact
     std::vector<std::pair<types::global_dof_index, types::global_dof_index>> rerouting;
 
   private:
-    /** The FaceRelation of contact face @p f of the coarse @p cell. */
-    template <typename Iterator>
+    /**
+     * The FaceRelation of contact face @p f of the coarse @p cell, which is
+     * @p fine_cell on the fine level's mesh (the same cell, or the parent
+     * of its fine cells).
+     */
+    template <typename Iterator, typename FineIterator>
     FaceRelation face_relation(const Iterator &      cell,
+                               const FineIterator &  fine_cell,
                                const unsigned int    f,
                                const LevelData<dim> &coarse,
                                const LevelData<dim> &fine) const;

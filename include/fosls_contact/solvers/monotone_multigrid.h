@@ -54,7 +54,9 @@ namespace FoslsContact
      * The set-up that depends only on the mesh and on @p fine_sparsity,
      * the pattern of the matrix of the problems to be solved (a
      * ConstrainedQP's compressed pattern): the hierarchy and the patterns
-     * of the Galerkin products. Collective.
+     * of the Galerkin products. On an adaptively refined
+     * @p discretization solving on its finest level, the levels are
+     * those of LevelMeshes (built here). Collective.
      */
     MonotoneMultigrid(const Discretization<dim> & discretization,
                       const LevelTransfer<dim> &  transfer,
@@ -78,6 +80,8 @@ namespace FoslsContact
     /** The energy increases counted so far, over all processes. */
     unsigned int energy_increases(const ConstrainedQP &qp) const;
 
+    /** The levels of an adaptively refined mesh (empty on a uniform one). */
+    const std::unique_ptr<const LevelMeshes<dim>> level_meshes;
     const MultilevelHierarchy<dim> hierarchy;
     const Parameters::Solver       parameters;
     /** The pattern the Galerkin products were set up for. */

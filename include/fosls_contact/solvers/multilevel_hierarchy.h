@@ -5,6 +5,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 
 #include <fosls_contact/discretization/discretization.h>
+#include <fosls_contact/discretization/level_meshes.h>
 #include <fosls_contact/discretization/level_transfer.h>
 #include <fosls_contact/solvers/contact_face_relations.h>
 #include <fosls_contact/solvers/vertex_patches.h>
@@ -15,7 +16,11 @@ namespace FoslsContact
 {
   /**
    * Everything the monotone multilevel method needs to know about the
-   * levels 0..finest of a Discretization, built once, on this process:
+   * levels 0..finest of a Discretization (its uniformly refined levels)
+   * or of an adaptively refined mesh (LevelMeshes: the uniform levels, the
+   * meshes between them and the adaptive mesh), built once, on this
+   * process; the solvers see only this class, so both hierarchies are
+   * one code path:
    * - the prolongations in the normal-tangential basis of every level,
    *   P_rot = R_l^{-1} P R_{l-1} (section 4.3: the change of basis enters
    *   the transfer operators once and for all), for the local fine DoFs,
@@ -32,10 +37,23 @@ namespace FoslsContact
                         const LevelTransfer<dim> & transfer,
                         const unsigned int         finest_level);
 
+    /**
+     * The levels of an adaptively refined mesh (LevelMeshes): the uniform
+     * levels, the capped meshes and the adaptive mesh on top.
+     */
+    explicit MultilevelHierarchy(const LevelMeshes<dim> &meshes);
+
     unsigned int finest_level() const { return finest; }
+
+    /**
+     * Whether level @p l is a level of an adaptively refined mesh
+     * (LevelMeshes) above the uniformly refined ones: a mesh with hanging
+     * nodes that refines some cells of the level below.
+     */
+    bool adaptive_level(const unsigned int l) const { return level(l).active_mesh; }
     const LevelData<dim> &level(const unsigned int l) const
     {
-      return discretization.level(l);
+      return sources[l].discretization->level(sources[l].index);
     }
     /**
      * Rotated prolongation from level @p l - 1 to level @p l: the rows of
@@ -90,11 +108,28 @@ namespace FoslsContact
     }
 
   private:
-    /** The rotated prolongation from level @p l - 1 to @p l. */
-    void rotate_prolongation(const unsigned int l, const LevelTransfer<dim> &transfer);
+    /** Level l: a level of a discretization, and the prolongation to it. */
+    struct Source
+    {
+      const Discretization<dim> * discretization;
+      unsigned int                index;
+      const SparseMatrix<double> *prolongation;
+      /**
+       * Relax only the patches at the cells of this mesh level (-1: all):
+       * on the levels between the uniform ones and the adaptive mesh,
+       * whose other cells are cells of the level below.
+       */
+      int local_smoothing;
+    };
 
-    const Discretization<dim> &discretization;
-    const unsigned int         finest;
+    /** Everything above, for the levels @p sources. */
+    void build(const std::vector<Source> &sources);
+
+    /** The rotated prolongation from level @p l - 1 to @p l. */
+    void rotate_prolongation(const unsigned int l);
+
+    std::vector<Source> sources;
+    unsigned int        finest = 0;
     std::vector<std::unique_ptr<SparsityPattern>>      rotated_sparsity;
     std::vector<std::unique_ptr<SparseMatrix<double>>> rotated;
     std::vector<VertexPatches<dim>>        level_patches;

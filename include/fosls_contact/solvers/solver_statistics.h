@@ -87,6 +87,8 @@ namespace FoslsContact
        * level.
        */
       std::vector<unsigned int> patch_colors;
+      /** The DoFs of every level 0..finest. */
+      std::vector<unsigned long long> level_dofs;
       /**
        * The visits of every level by the cycles (those of the coarsest
        * level the cycle reaches are exact solves: level 0, or a finer one

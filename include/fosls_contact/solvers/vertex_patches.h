@@ -54,8 +54,15 @@ namespace FoslsContact
   struct VertexPatches
   {
     VertexPatches() = default;
-    /** The patches of level @p l of @p discretization, and their colors. Collective. */
-    VertexPatches(const Discretization<dim> &discretization, const unsigned int l);
+    /**
+     * The patches of level @p l of @p discretization, and their colors;
+     * with @p at_cells_of_level, only the patches of the vertices of the
+     * cells of that mesh level (local smoothing: on a level of an adaptive
+     * mesh, LevelMeshes, the cells it refines). Collective.
+     */
+    VertexPatches(const Discretization<dim> &discretization,
+                  const unsigned int         l,
+                  const int                  at_cells_of_level = -1);
 
     /** Each patch sorted by global index, in local indices, in VertexKey order. */
     std::vector<std::vector<types::global_dof_index>> patches;

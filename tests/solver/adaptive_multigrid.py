@@ -1,0 +1,101 @@
+#!/usr/bin/env python3
+# The monotone multigrid on adaptively refined meshes (LevelMeshes: one
+# level per mesh level, the levels above the uniform ones meshes with
+# hanging nodes of their own). Every step of every run solves its problem
+# a second time with the active set method (Solver/Cross check). Checked:
+# - every step converges; J never goes up within a solve (no energy
+#   increase) and the last solution is feasible;
+# - the multigrid solution is the active set method's on the same mesh: J
+#   to 1e-10 relative (measured 1e-13 on the Hertz half disc, 1e-11 on the
+#   L-shape after 10 steps), every DoF value to 1e-6 of the largest
+#   (measured 2e-7 on the Hertz half disc after 4 steps and 5e-8 on the
+#   L-shape with 12 levels: the round-off floor of the corrections grows
+#   with the depth of the mesh; a wrong prolongation, a missing hanging
+#   node master or a coarse obstacle that is not one stops far above);
+# - the number of cycles does not grow with the adaptive steps: no step
+#   above 1.6 times the first (uniform) mesh's (measured on the half disc
+#   48, 50, 37, 67, 44 over 4 steps, 7 levels; on the L-shape 10 to 14
+#   over 8 steps, 11 levels, where uniform meshes take 10 on every level;
+#   a hierarchy whose coarse levels miss the refined region would take
+#   more cycles with every level);
+# - the default (Newton-accelerated) cycle and the plain cycle (Krylov
+#   steps = 0) on the square, 2D and the cube, 3D (hanging faces and
+#   edges);
+# - the plain cycle with 1 and 2 threads (the patch colors include the
+#   couplings through eliminated hanging nodes): the same meshes and
+#   cycles at every step, J to 1e-7 (measured 8e-9: the assembled
+#   matrices differ in their last digits with the thread count, and J, a
+#   small difference of O(1) terms, magnifies that; each run's J is its
+#   active set solution's to 2e-16).
+import os
+import sys
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from fosls_runs import Runner, check, finish, relative_difference, rounded
+
+R = Runner(sys.argv)
+multigrid = ["Solver/Type=monotone multigrid", "Solver/Cross check=true"]
+
+
+def check_run(run, label, n_steps, cycle_growth=True):
+    check(run.ok() and run["converged"] is True, label + ": exit code 0, converged")
+    steps = run["adaptive_steps"] or []
+    for s in steps:
+        print("%s, step %d: %d DoFs, %d iterations, %d cycles, J %s" % (
+            label, s["step"], s["dofs"], s["iterations"], s["cycles"],
+            rounded(s["functional"])))
+    check(len(steps) == n_steps and all(s["converged"] for s in steps),
+          label + ": %d steps, each converged" % n_steps)
+    check(all(s["energy_increases"] == 0 for s in steps),
+          label + ": J never increased within a solve")
+    check(run["max_violation"] is not None and run["max_violation"] <= 1e-12,
+          label + ": the last solution is feasible (1e-12)")
+    worst_J = max((s["cross_check_functional"] for s in steps), default=1)
+    worst_x = max((s["cross_check_solution"] for s in steps), default=1)
+    check(worst_J <= 1e-10, label + ": J is the active set method's to 1e-10 at every step")
+    check(worst_x <= 1e-6,
+          label + ": every DoF value the active set method's to 1e-6 of the largest")
+    if cycle_growth and steps:
+        first = steps[0]["cycles"]
+        check(all(s["cycles"] <= 1.6 * first for s in steps),
+              label + ": the cycles do not grow with the steps (at most 1.6 times the "
+              "first mesh's)")
+    return steps
+
+
+label = "hertz_adaptive, 4 steps"
+run = R.run("prm/hertz_adaptive.prm", multigrid + ["Adaptivity/Steps=4"], "hertz")
+check_run(run, label, 5)
+levels = run["level_dofs"] or []
+print(label + ": %d levels, DoFs %s" % (len(levels), ", ".join(str(n) for n in levels)))
+check(len(levels) == 7 and all(b >= a for a, b in zip(levels, levels[1:])),
+      label + ": 7 levels (3 uniform, 3 between, the adaptive mesh), nested")
+
+label = "l_shape_singular, 8 steps"
+run = R.run("prm/l_shape_singular.prm", multigrid + ["Adaptivity/Steps=8"], "l_shape")
+check_run(run, label, 9)
+
+label = "square, 4 levels, 3 steps"
+square = ["prm/square.prm", multigrid + ["Geometry/Levels=4", "Adaptivity/Steps=3"]]
+run = R.run(square[0], square[1], "square")
+check_run(run, label, 4)
+
+label = "square, plain cycle"
+run = R.run(square[0], square[1] + ["Solver/Krylov steps=0"], "square_plain")
+check_run(run, label, 4, cycle_growth=False)
+
+label = "cube, 3 levels, 2 steps"
+run = R.run("prm/cube3d.prm", multigrid + ["Geometry/Levels=3", "Adaptivity/Steps=2"], "cube")
+check_run(run, label, 3)
+
+label = "square, plain cycle, 1 and 2 threads"
+plain = square[1] + ["Solver/Krylov steps=0"]
+one = R.run(square[0], plain + ["Solver/Threads=1"], "square_1")
+two = R.run(square[0], plain + ["Solver/Threads=2"], "square_2")
+a, b = one["adaptive_steps"] or [], two["adaptive_steps"] or []
+check(len(a) == 4 and len(b) == 4 and
+      all(s["dofs"] == t["dofs"] and s["cycles"] == t["cycles"] and
+          relative_difference(s["functional"], t["functional"]) <= 1e-7 for s, t in zip(a, b)),
+      label + ": the same meshes, cycles, and J to 1e-7 at every step")
+
+finish()

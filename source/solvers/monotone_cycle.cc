@@ -73,9 +73,7 @@ namespace FoslsContact
     prepare(l, A, role);
     // (an exact coarse solve needs one visit; a level of an adaptive mesh
     // visits the one below once: there each level has about as many DoFs
-    // as the next, and a W-cycle would visit level l 2^(L-l) times. Hertz
-    // half disc after 6 adaptive steps, 9 levels: 11.1 s with the W-cycle
-    // on every level, 2.6 s with the V-cycle)
+    // as the next, and a W-cycle would visit level l 2^(L-l) times)
     const unsigned int visits =
       solved_exactly(l - 1, linear) || *type == Cycle::V || hierarchy.adaptive_level(l) ? 1 : 2;
     double             alpha  = 1.; // the damping of the last visit's correction

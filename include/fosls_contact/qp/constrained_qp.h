@@ -161,10 +161,10 @@ namespace FoslsContact
      * the mesh (AlgebraicLevel::refinement_ratio; 1 on a uniform mesh,
      * whose h_min is about n^(-1/dim)). The estimate is the product of the
      * two: measured on the square (levels 6-9, lambda = 1 and inf), the
-     * corrections stop decreasing at 4-5 times this value. On the adaptive
-     * Hertz mesh of 4 steps without the factor r = 16, they stopped
-     * decreasing 50 times above the uniform mesh's relative floor, and
-     * the stagnation test ended the run after 8 instead of 3 iterations.
+     * corrections stop decreasing at 4-5 times this value. Without the
+     * factor r the estimate is too low on adaptive meshes, and their
+     * solves end only by the stagnation test, after four iterations of
+     * noise.
      */
     double round_off_correction(const LevelVector &x) const;
 

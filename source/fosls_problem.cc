@@ -214,6 +214,7 @@ namespace FoslsContact
     indicators = std::make_unique<ErrorIndicators<dim>>(*discretization, parameters.weights);
     indicators->compute(solution);
     run_summary.add_solver(summary);
+    run_summary.add_memory(summary, transfer->memory_consumption());
     if (parameters.solver.cross_check)
       summary["cross_check"] = "{\"functional\": " + json_number(cross_check_functional) +
                                ", \"solution\": " + json_number(cross_check_solution) + "}";

@@ -1,3 +1,4 @@
+#include <deal.II/base/memory_consumption.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
@@ -340,6 +341,32 @@ namespace FoslsContact
     // (kept ghosted: for FEValues and DataOut)
     active.update_ghost_values();
     return active;
+  }
+
+  template <int dim>
+  std::size_t
+  Discretization<dim>::mesh_memory_consumption() const
+  {
+    return triangulation.memory_consumption() + dof_handler.memory_consumption();
+  }
+
+
+  template <int dim>
+  std::size_t
+  Discretization<dim>::level_memory_consumption() const
+  {
+    using MemoryConsumption::memory_consumption;
+    std::size_t bytes = 0;
+    for (const LevelData<dim> &data : levels)
+      {
+        bytes += data.sparsity.memory_consumption() + data.role.capacity() * sizeof(DoFRole) +
+                 data.fixed_values.memory_consumption() + data.upper_bounds.memory_consumption() +
+                 memory_consumption(data.rotation_of_dof);
+        for (const RotationBlock<dim> &block : data.rotations)
+          bytes += sizeof(block) + block.matrix.memory_consumption() +
+                   block.inverse.memory_consumption();
+      }
+    return bytes;
   }
 
   template class Discretization<2>;

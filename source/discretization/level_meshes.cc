@@ -142,6 +142,20 @@ namespace FoslsContact
   }
 
 
+  template <int dim>
+  std::size_t
+  LevelMeshes<dim>::memory_consumption() const
+  {
+    std::size_t bytes = 0;
+    for (const auto &discretization : capped)
+      bytes += discretization->mesh_memory_consumption() +
+               discretization->level_memory_consumption();
+    for (unsigned int k = 0; k < matrices.size(); ++k)
+      if (matrices[k])
+        bytes += matrices[k]->memory_consumption() + sparsities[k]->memory_consumption();
+    return bytes;
+  }
+
   template class LevelMeshes<2>;
   template class LevelMeshes<3>;
 } // namespace FoslsContact

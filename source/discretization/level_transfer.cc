@@ -87,6 +87,17 @@ namespace FoslsContact
     vmult(*matrices[to_level], dst, src);
   }
 
+  template <int dim>
+  std::size_t
+  LevelTransfer<dim>::memory_consumption() const
+  {
+    std::size_t bytes = 0;
+    for (unsigned int l = 0; l < matrices.size(); ++l)
+      if (matrices[l])
+        bytes += matrices[l]->memory_consumption() + sparsities[l]->memory_consumption();
+    return bytes;
+  }
+
   template class LevelTransfer<2>;
   template class LevelTransfer<3>;
 } // namespace FoslsContact

@@ -97,6 +97,29 @@ namespace FoslsContact
 
   template <int dim>
   void
+  RunSummary<dim>::add_memory(Summary &summary, const std::size_t transfer_bytes) const
+  {
+    std::vector<std::pair<std::string, std::size_t>> memory = {
+      {"mesh and DoF handler", discretization.mesh_memory_consumption()},
+      {"level data (coupling patterns, roles, bounds)", discretization.level_memory_consumption()},
+      {"prolongations of the uniform levels", transfer_bytes},
+      {"assembled problem (A, parts of J, vectors)", qp.memory_consumption()}};
+    const SolverStatistics statistics = solver.statistics();
+    if (statistics.multilevel)
+      memory.insert(memory.end(),
+                    statistics.multilevel->memory.begin(),
+                    statistics.multilevel->memory.end());
+    const MPI_Comm comm  = qp.get_communicator();
+    std::string    items = "{";
+    for (const auto &[name, bytes] : memory)
+      items += std::string(items.size() > 1 ? ", " : "") + "\"" + name + "\": " +
+               number(Utilities::MPI::sum(bytes / 1048576., comm));
+    summary["memory_mb"] = items + "}";
+  }
+
+
+  template <int dim>
+  void
   RunSummary<dim>::add_solver(Summary &summary) const
   {
     summary["dimension"]  = std::to_string(dim);

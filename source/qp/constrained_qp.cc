@@ -1,3 +1,5 @@
+#include <deal.II/base/memory_consumption.h>
+
 #include <fosls_contact/qp/accurate_sums.h>
 #include <fosls_contact/qp/constrained_qp.h>
 
@@ -207,4 +209,15 @@ namespace FoslsContact
     return std::numeric_limits<double>::epsilon() * std::sqrt(sum) *
            std::pow(double(x.size()), 1. / dimension) * refinement_ratio;
   }
+  std::size_t
+  ConstrainedQP::memory_consumption() const
+  {
+    return matrix.memory_consumption() + sparsity.memory_consumption() +
+           matrix_eq.memory_consumption() + sparsity_eq.memory_consumption() +
+           matrix_compl.memory_consumption() + sparsity_compl.memory_consumption() +
+           rhs.memory_consumption() + rhs_eq.memory_consumption() +
+           rhs_compl.memory_consumption() + role.capacity() * sizeof(DoFRole) +
+           fixed_values.memory_consumption() + upper_bounds.memory_consumption();
+  }
+
 } // namespace FoslsContact

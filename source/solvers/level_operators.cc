@@ -1,3 +1,4 @@
+#include <deal.II/base/memory_consumption.h>
 #include <deal.II/base/mpi.templates.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
@@ -40,8 +41,10 @@ namespace FoslsContact
         const SparsityPattern &A  = l == finest ? fine_sparsity : fine.sparsity;
         const SparsityPattern &P0 = hierarchy.prolongation(l).get_sparsity_pattern();
         DynamicSparsityPattern dsp(P0.n_rows(), P0.n_cols());
-        for (auto e = P0.begin(); e != P0.end(); ++e)
-          dsp.add(e->row(), e->column());
+        // (by rows: an iterator's row() searches for its row)
+        for (unsigned int i = 0; i < P0.n_rows(); ++i)
+          for (auto e = P0.begin(i); e != P0.end(i); ++e)
+            dsp.add(i, e->column());
         for (const auto &[i, j] : hierarchy.rerouting_entries(l))
           dsp.add(i, j);
         prolongation_sparsity[l].copy_from(dsp);
@@ -230,6 +233,29 @@ namespace FoslsContact
            bound > 0 ? difference.linfty_norm() / bound :
            size > 0  ? std::numeric_limits<double>::infinity() :
                        0.;
+  }
+
+  template <int dim>
+  std::size_t
+  LevelOperators<dim>::product_memory_consumption() const
+  {
+    std::size_t bytes = 0;
+    for (const GalerkinProduct &p : product)
+      bytes += p.memory_consumption();
+    return bytes;
+  }
+
+
+  template <int dim>
+  std::size_t
+  LevelOperators<dim>::memory_consumption() const
+  {
+    std::size_t bytes = 0;
+    for (unsigned int l = 0; l < coarse.size(); ++l)
+      bytes += coarse[l].memory_consumption();
+    for (unsigned int l = 0; l < prolongation.size(); ++l)
+      bytes += prolongation[l].memory_consumption() + prolongation_sparsity[l].memory_consumption();
+    return bytes;
   }
 
   template class LevelOperators<2>;

@@ -65,6 +65,15 @@ namespace FoslsContact
       multilevel.level_times[l].seconds -= counters.level_visits[l - 1].seconds;
     multilevel.coarse_defect_checks     = counters.coarse_defect_checks;
     multilevel.coarse_defect_difference = counters.coarse_defect_difference;
+    // (the pre- and post-smoother share their patches)
+    multilevel.memory = {
+      {"multigrid: patch smoothers", pre_smoother.memory_consumption()},
+      {"multigrid: Galerkin products (A P)", operators.product_memory_consumption()},
+      {"multigrid: Galerkin operators, truncated prolongations", operators.memory_consumption()},
+      {"multigrid: rotated prolongations, vertex patches", hierarchy.memory_consumption()}};
+    if (level_meshes)
+      multilevel.memory.emplace_back("multigrid: meshes of the adaptive levels",
+                                     level_meshes->memory_consumption());
     result.multilevel                   = multilevel;
     return result;
   }

@@ -1,3 +1,4 @@
+#include <deal.II/base/memory_consumption.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <fosls_contact/solvers/multilevel_hierarchy.h>
@@ -114,6 +115,20 @@ namespace FoslsContact
     R_fine_inverse.mmult(*rotated[l], tmp);
   }
 
+
+  template <int dim>
+  std::size_t
+  MultilevelHierarchy<dim>::memory_consumption() const
+  {
+    std::size_t bytes = 0;
+    for (unsigned int l = 0; l < rotated.size(); ++l)
+      if (rotated[l])
+        bytes += rotated[l]->memory_consumption() + rotated_sparsity[l]->memory_consumption();
+    for (const VertexPatches<dim> &patches : level_patches)
+      bytes += MemoryConsumption::memory_consumption(patches.patches) +
+               MemoryConsumption::memory_consumption(patches.colors);
+    return bytes;
+  }
 
   template class MultilevelHierarchy<2>;
   template class MultilevelHierarchy<3>;

@@ -1,5 +1,6 @@
 #include <fosls_contact/solvers/packed_patches.h>
 
+#include <deal.II/base/memory_consumption.h>
 #include <deal.II/base/parallel.h>
 #include <deal.II/base/thread_local_storage.h>
 #include <deal.II/lac/full_matrix.h>
@@ -347,5 +348,22 @@ namespace FoslsContact
             invert_spd(M);
           patch.inverse.assign(M.begin(), M.end());
         }
+  }
+  std::size_t
+  PackedPatches::memory_consumption() const
+  {
+    using MemoryConsumption::memory_consumption;
+    std::size_t bytes = memory_consumption(counted) + memory_consumption(start) +
+                        memory_consumption(inverse_start) + memory_consumption(neighbor_start) +
+                        neighbors.memory_consumption() + memory_consumption(bounded) +
+                        inverse.memory_consumption() + memory_consumption(row_start) +
+                        columns.memory_consumption() + values.memory_consumption() +
+                        memory_consumption(box_qp) + memory_consumption(color_start);
+    for (const BoxQP &qp : qps)
+      bytes += qp.memory_consumption();
+    for (const LinearPatch &patch : linear_patch)
+      bytes += sizeof(LinearPatch) + memory_consumption(patch.moving) +
+               memory_consumption(patch.inverse);
+    return bytes;
   }
 } // namespace FoslsContact

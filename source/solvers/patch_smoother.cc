@@ -1,5 +1,9 @@
+#include <deal.II/base/memory_consumption.h>
+
 #include <fosls_contact/solvers/energy_check.h>
 #include <fosls_contact/solvers/patch_smoother.h>
+
+#include <deal.II/base/memory_consumption.h>
 
 #include <algorithm>
 #include <cmath>
@@ -300,5 +304,14 @@ namespace FoslsContact
     shared->levels.assign(n_levels, PackedPatches());
     shared->obstacles.assign(n_levels, nullptr);
     shared->linear.assign(n_levels, false);
+  }
+
+  std::size_t
+  PatchSmoother::memory_consumption() const
+  {
+    std::size_t bytes = 0;
+    for (const PackedPatches &level : shared->levels)
+      bytes += level.memory_consumption();
+    return bytes;
   }
 } // namespace FoslsContact

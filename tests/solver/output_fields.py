@@ -14,7 +14,8 @@
 #   contact pressure, normal displacement and gap, the gap is never
 #   negative, and the pressure integrated over the contact faces is the
 #   contact force (RT0's normal traction is constant on a face);
-#   summary.json's memory_by_phase has the resident memory after each phase.
+#   summary.json's memory_by_phase has the resident memory after each phase,
+#   and its memory_mb the memory of the program's structures.
 # - prm/steel_cylinder.prm (2 levels), a curved boundary: the VTU draws the
 #   cells with a quadratic mapping, subdivided once, so the midpoints of
 #   the boundary edges lie on the circle of radius 50 mm as well.
@@ -123,6 +124,15 @@ check([p["phase"] for p in phases] == ["Setup: mesh, DoFs, levels", "Assembly",
       and all(a["peak_rss_mb"] <= b["peak_rss_mb"] for a, b in zip(phases, phases[1:])),
       "SI square: memory_by_phase has the resident memory after each phase up to the solve, "
       "its peaks growing up to peak_rss_mb")
+memory = square["memory_mb"]
+check(set(memory) >= {"mesh and DoF handler", "level data (coupling patterns, roles, bounds)",
+                      "prolongations of the uniform levels",
+                      "assembled problem (A, parts of J, vectors)", "multigrid: patch smoothers",
+                      "multigrid: Galerkin products (A P)"}
+      and all(v > 0 for v in memory.values())
+      and sum(memory.values()) <= square["peak_rss_mb"],
+      "SI square: memory_mb has the structures' memory, each positive, together below "
+      "peak_rss_mb")
 force, F, lowest, scale = surface_force(square, 2, [0., -1.])
 check(relative_difference(force, F) < 1e-5, "SI square: the contact surface's pressure "
       "integrates to the contact force (%s N/m)" % rounded(F, 4))

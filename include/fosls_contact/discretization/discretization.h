@@ -144,6 +144,14 @@ namespace FoslsContact
      */
     std::vector<types::global_dof_index> sweep_order(const unsigned int l) const;
 
+    /** The bytes of the mesh (with p4est's forest) and the DoF handler. */
+    std::size_t mesh_memory_consumption() const;
+    /**
+     * The bytes of the level data: the coupling patterns, roles, fixed
+     * values, bounds and rotations of every level.
+     */
+    std::size_t level_memory_consumption() const;
+
   private:
     /**
      * The level data of level @p l: map_level_dofs(), then the roles,

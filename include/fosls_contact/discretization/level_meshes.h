@@ -72,6 +72,9 @@ namespace FoslsContact
       return *sources[l].prolongation;
     }
 
+    /** The bytes of the meshes of their own and the prolongations. */
+    std::size_t memory_consumption() const;
+
   private:
     /**
      * The prolongation from level @p l - 1 to level @p l of the

@@ -49,6 +49,9 @@ namespace FoslsContact
                     LevelVector &      dst,
                     const LevelVector &src) const;
 
+    /** The bytes of the prolongation matrices and their patterns. */
+    std::size_t memory_consumption() const;
+
   private:
     std::vector<std::unique_ptr<SparsityPattern>>      sparsities;
     std::vector<std::unique_ptr<SparseMatrix<double>>> matrices;

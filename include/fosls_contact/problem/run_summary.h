@@ -64,6 +64,14 @@ namespace FoslsContact
     /** The problem's size and how the solver did (iterations, rates, statistics). */
     void add_solver(Summary &summary) const;
     /**
+     * Where the memory goes: `memory_mb`, the bytes of the program's
+     * structures (summed over the processes) by structure: the mesh and
+     * DoF handler, the level data, the uniform levels' prolongations
+     * (@p transfer_bytes), the assembled problem and the solver's own
+     * (SolverStatistics::Multilevel::memory). Collective.
+     */
+    void add_memory(Summary &summary, const std::size_t transfer_bytes) const;
+    /**
      * Print a note if @p J (of the assembled quadratic form, in the
      * scene's units) and the sum of its cellwise parts in @p indicators
      * differ by more than 1e-3 relative: the form's round-off reaches J.

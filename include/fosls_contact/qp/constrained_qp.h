@@ -111,6 +111,9 @@ namespace FoslsContact
      */
     void reinit(const AlgebraicLevel &level);
 
+    /** The bytes of A, the parts of J, their patterns and the vectors. */
+    std::size_t memory_consumption() const;
+
     /** The number of DoFs (all processes). */
     types::global_dof_index size() const { return rhs.size(); }
     /** The number of owned DoFs (the first local ones). */

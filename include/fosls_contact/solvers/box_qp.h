@@ -42,6 +42,12 @@ namespace FoslsContact
     /** The inverse of M. */
     const FullMatrix<double> &inverse_matrix() const { return inverse; }
 
+    /** The bytes of M and its inverse. */
+    std::size_t memory_consumption() const
+    {
+      return sizeof(*this) + matrix.memory_consumption() + inverse.memory_consumption();
+    }
+
     /**
      * Solve; on return, c is the minimizer and at_bound[i] tells whether
      * c_i = s_i (then c_i is set to s_i exactly). Returns the change of

@@ -65,6 +65,9 @@ namespace FoslsContact
      */
     void Tvmult(LevelVector &dst, const LevelVector &src) const;
 
+    /** The bytes of A P (values and pattern) and of the index arrays. */
+    std::size_t memory_consumption() const;
+
   private:
     /** transpose_start, transpose_row and transpose_position of @p pattern. */
     void transpose_pattern(const SparsityPattern &pattern, const unsigned int n_owned);

@@ -138,6 +138,11 @@ namespace FoslsContact
                                     const LevelVector &         v,
                                     const LevelVector &         r_coarse) const;
 
+    /** The bytes of the Galerkin products' structures (A P of every level). */
+    std::size_t product_memory_consumption() const;
+    /** The bytes of the Galerkin operators and the truncated prolongations. */
+    std::size_t memory_consumption() const;
+
   private:
     /** P~ of level l: the rows of P at truncated DoFs are zero. */
     void truncate_rows(const unsigned int l, const std::vector<bool> &truncated);

@@ -107,6 +107,12 @@ namespace FoslsContact
       return contact_faces[l].rerouting;
     }
 
+    /**
+     * The bytes of the rotated prolongations and the vertex patches (the
+     * levels' own data is the discretizations').
+     */
+    std::size_t memory_consumption() const;
+
   private:
     /** Level l: a level of a discretization, and the prolongation to it. */
     struct Source

@@ -70,6 +70,9 @@ namespace FoslsContact
      */
     void set_linear_roles(const std::vector<DoFRole> &linear_role);
 
+    /** The bytes of the packed arrays, the patch problems and inverses. */
+    std::size_t memory_consumption() const;
+
     /** The number of colors (over all processes). */
     unsigned int n_colors() const
     {

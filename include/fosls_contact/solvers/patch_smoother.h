@@ -110,6 +110,9 @@ namespace FoslsContact
     /** Patch steps whose objective change was positive beyond round-off. */
     unsigned int energy_increases() const { return shared->n_increases; }
 
+    /** The bytes of the packed patches of all levels (shared by the copies). */
+    std::size_t memory_consumption() const;
+
     /** Number of colors of level @p l, over all processes. */
     unsigned int n_colors(const unsigned int l) const
     {

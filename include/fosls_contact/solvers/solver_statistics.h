@@ -104,6 +104,12 @@ namespace FoslsContact
        */
       unsigned int coarse_defect_checks     = 0;
       double       coarse_defect_difference = 0;
+      /**
+       * The bytes this process holds in the solver's structures, by
+       * structure (memory_consumption() of each): what the solve adds to
+       * the memory of the assembled problem.
+       */
+      std::vector<std::pair<std::string, std::size_t>> memory;
     };
     std::optional<Multilevel> multilevel;
   };

@@ -38,9 +38,8 @@ namespace FoslsContact
     }
 
     // the columns of each owned coarse row outside the result's pattern
-    // (marked per row: SparsityPattern::exists() searches the row, which
-    // made this loop quadratic in the row length, 3 s of the cube's
-    // level 6)
+    // (marked per row: SparsityPattern::exists() scans the row, which
+    // made this loop quadratic in the row length)
     extra_start.assign(1, 0);
     extra_columns.clear();
     std::vector<unsigned int> seen_in_row(n_coarse_local, numbers::invalid_unsigned_int);

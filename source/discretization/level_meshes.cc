@@ -4,6 +4,7 @@
 
 #include <fosls_contact/discretization/level_meshes.h>
 #include <fosls_contact/discretization/rt_signs.h>
+#include <fosls_contact/qp/matrix_list_memory.h>
 
 #include <map>
 
@@ -146,13 +147,10 @@ namespace FoslsContact
   std::size_t
   LevelMeshes<dim>::memory_consumption() const
   {
-    std::size_t bytes = 0;
+    std::size_t bytes = matrix_list_memory_consumption(matrices, sparsities);
     for (const auto &discretization : capped)
       bytes += discretization->mesh_memory_consumption() +
                discretization->level_memory_consumption();
-    for (unsigned int k = 0; k < matrices.size(); ++k)
-      if (matrices[k])
-        bytes += matrices[k]->memory_consumption() + sparsities[k]->memory_consumption();
     return bytes;
   }
 

@@ -4,6 +4,7 @@
 
 #include <fosls_contact/discretization/level_transfer.h>
 #include <fosls_contact/discretization/rt_signs.h>
+#include <fosls_contact/qp/matrix_list_memory.h>
 
 namespace FoslsContact
 {
@@ -91,11 +92,7 @@ namespace FoslsContact
   std::size_t
   LevelTransfer<dim>::memory_consumption() const
   {
-    std::size_t bytes = 0;
-    for (unsigned int l = 0; l < matrices.size(); ++l)
-      if (matrices[l])
-        bytes += matrices[l]->memory_consumption() + sparsities[l]->memory_consumption();
-    return bytes;
+    return matrix_list_memory_consumption(matrices, sparsities);
   }
 
   template class LevelTransfer<2>;

@@ -26,16 +26,23 @@ namespace FoslsContact
     n_coarse_owned             = coarse_partitioner->locally_owned_size();
     transpose_pattern(pattern, n_owned);
 
-    // A P on the owned rows of A
-    {
-      DynamicSparsityPattern dsp(n_owned, n_coarse_local);
-      for (unsigned int r = 0; r < n_owned; ++r)
-        for (auto a = fine_pattern.begin(r); a != fine_pattern.end(r); ++a)
-          for (auto p = pattern.begin(a->column()); p != pattern.end(a->column()); ++p)
-            dsp.add(r, p->column());
-      product_sparsity.copy_from(dsp);
-      product.reinit(product_sparsity);
-    }
+    // the pattern of A P on the owned rows of A, for the room of each row
+    // in compute() and the columns below; not kept
+    DynamicSparsityPattern product_pattern(n_owned, n_coarse_local);
+    for (unsigned int r = 0; r < n_owned; ++r)
+      for (auto a = fine_pattern.begin(r); a != fine_pattern.end(r); ++a)
+        for (auto p = pattern.begin(a->column()); p != pattern.end(a->column()); ++p)
+          product_pattern.add(r, p->column());
+    product_row_length.resize(n_owned);
+    for (unsigned int r = 0; r < n_owned; ++r)
+      product_row_length[r] = product_pattern.row_length(r);
+    // the columns of P^T (A P) in coarse row j: those of the rows of A P
+    // at column j of P
+    auto for_each_column = [&](const unsigned int j, const auto &f) {
+      for (std::size_t k = transpose_start[j]; k < transpose_start[j + 1]; ++k)
+        for (unsigned int q = 0; q < product_row_length[transpose_row[k]]; ++q)
+          f(product_pattern.column_number(transpose_row[k], q));
+    };
 
     // the columns of each owned coarse row outside the result's pattern
     // (marked per row: SparsityPattern::exists() scans the row, which
@@ -49,15 +56,13 @@ namespace FoslsContact
         for (auto e = coarse_pattern.begin(j); e != coarse_pattern.end(j); ++e)
           seen_in_row[e->column()] = j;
         columns.clear();
-        for (std::size_t k = transpose_start[j]; k < transpose_start[j + 1]; ++k)
-          for (auto e = product_sparsity.begin(transpose_row[k]);
-               e != product_sparsity.end(transpose_row[k]);
-               ++e)
-            if (seen_in_row[e->column()] != j)
-              {
-                seen_in_row[e->column()] = j;
-                columns.push_back(e->column());
-              }
+        for_each_column(j, [&](const unsigned int c) {
+          if (seen_in_row[c] != j)
+            {
+              seen_in_row[c] = j;
+              columns.push_back(c);
+            }
+        });
         std::sort(columns.begin(), columns.end());
         extra_columns.insert(extra_columns.end(), columns.begin(), columns.end());
         extra_start.push_back(extra_columns.size());
@@ -70,11 +75,7 @@ namespace FoslsContact
     for (unsigned int j = n_coarse_owned; j < n_coarse_local; ++j)
       {
         std::set<unsigned int> columns;
-        for (std::size_t k = transpose_start[j]; k < transpose_start[j + 1]; ++k)
-          for (auto e = product_sparsity.begin(transpose_row[k]);
-               e != product_sparsity.end(transpose_row[k]);
-               ++e)
-            columns.insert(e->column());
+        for_each_column(j, [&](const unsigned int c) { columns.insert(c); });
         if (columns.empty())
           continue;
         ghost_row.push_back(j);
@@ -158,16 +159,25 @@ namespace FoslsContact
 
   namespace
   {
-    /** The dense row @p row into row @p r of @p M, leaving it zero. */
-    void
-    take_row(SparseMatrix<double> &M, const unsigned int r, std::vector<double> &row)
+    /**
+     * Owned fine rows per block of compute(). The buffer of a block's rows
+     * of A P then holds about 16384 times 60-90 entries in 3D (12-16 MB)
+     * instead of the product of the whole level; a coarse row is reached
+     * by a few blocks, and each visit loads and stores its partial sums
+     * once.
+     */
+    constexpr unsigned int block_rows = 16384;
+
+    /**
+     * The work arrays of a thread: a dense row of length n_coarse_local,
+     * kept zero between rows, and for every coarse column the fine row
+     * that last reached it (invalid between rows).
+     */
+    struct ProductWork
     {
-      for (auto e = M.begin(r); e != M.end(r); ++e)
-        {
-          e->value()       = row[e->column()];
-          row[e->column()] = 0.;
-        }
-    }
+      std::vector<double>       row;
+      std::vector<unsigned int> reached_by;
+    };
 
     /** The message of an entry of the product outside the coarse pattern. */
     const char *const outside_pattern =
@@ -194,83 +204,161 @@ namespace FoslsContact
       },
       1000);
 
-    // a dense row of length n_coarse_local per thread, kept zero between
-    // rows
-    Threads::ThreadLocalStorage<std::vector<double>> dense_row(
-      std::vector<double>(n_coarse_local, 0.));
-
-    // product = A P, by the owned rows of A
-    for_subranges(
-      0u,
-      static_cast<unsigned int>(product.m()),
-      [&](const unsigned int begin, const unsigned int end) {
-        std::vector<double> &row = dense_row.get();
-        for (unsigned int r = begin; r < end; ++r)
-          {
-            for (auto a = A.begin(r); a != A.end(r); ++a)
-              if (a->value() != 0.)
-                for (auto p = P.begin(a->column()); p != P.end(a->column()); ++p)
-                  row[p->column()] += a->value() * P_values[p->global_index()];
-            take_row(product, r, row);
-          }
-      },
-      200);
-
-    // P^T product: the owned rows of the result, then the parts of the
-    // ghost rows; a nonzero left in the dense row after the row of the
-    // result is read off lies outside the result's pattern
+    // the sums start at zero: the owned rows of the result, the parts of
+    // the ghost rows and the entries outside the pattern
     for_subranges(
       0u,
       n_coarse_owned,
       [&](const unsigned int begin, const unsigned int end) {
-        std::vector<double> &row = dense_row.get();
         for (unsigned int j = begin; j < end; ++j)
-          {
-            row_of_result(j, row);
-            take_row(galerkin, j, row);
-            for (std::size_t k = extra_start[j]; k < extra_start[j + 1]; ++k)
-              {
-                AssertThrow(row[extra_columns[k]] == 0., ExcMessage(outside_pattern));
-              }
-          }
+          for (auto e = galerkin.begin(j); e != galerkin.end(j); ++e)
+            e->value() = 0.;
       },
-      100);
-    for_subranges(
-      0u,
-      static_cast<unsigned int>(ghost_row.size()),
-      [&](const unsigned int begin, const unsigned int end) {
-        std::vector<double> &row = dense_row.get();
-        for (unsigned int r = begin; r < end; ++r)
+      1000);
+    std::fill(ghost_values.begin(), ghost_values.end(), 0.);
+    std::vector<double> extra_values(extra_columns.size(), 0.);
+
+    Threads::ThreadLocalStorage<ProductWork> thread_work(
+      ProductWork{std::vector<double>(n_coarse_local, 0.),
+                  std::vector<unsigned int>(n_coarse_local, numbers::invalid_unsigned_int)});
+
+    // the partial sums of coarse row j into (load) and out of a dense row:
+    // an owned row's pattern and outside entries, or a ghost row's parts
+    auto move_sums = [&](const unsigned int j, std::vector<double> &row, const bool load) {
+      auto move = [&](double &stored, const unsigned int c) {
+        if (load)
+          row[c] = stored;
+        else
           {
-            row_of_result(ghost_row[r], row);
-            for (std::size_t k = ghost_start[r]; k < ghost_start[r + 1]; ++k)
-              {
-                ghost_values[k]       = row[ghost_columns[k]];
-                row[ghost_columns[k]] = 0.;
-              }
+            stored = row[c];
+            row[c] = 0.;
           }
-      },
-      100);
+      };
+      if (j < n_coarse_owned)
+        {
+          for (auto e = galerkin.begin(j); e != galerkin.end(j); ++e)
+            if (load)
+              row[e->column()] = e->value();
+            else
+              {
+                e->value()       = row[e->column()];
+                row[e->column()] = 0.;
+              }
+          for (std::size_t k = extra_start[j]; k < extra_start[j + 1]; ++k)
+            move(extra_values[k], extra_columns[k]);
+        }
+      else
+        {
+          const std::size_t r =
+            std::lower_bound(ghost_row.begin(), ghost_row.end(), j) - ghost_row.begin();
+          for (std::size_t k = ghost_start[r]; k < ghost_start[r + 1]; ++k)
+            move(ghost_values[k], ghost_columns[k]);
+        }
+    };
+
+    // next[j]: the first entry of column j of P whose fine row is in the
+    // current block or a later one (a column lists its rows in increasing
+    // order)
+    std::vector<std::size_t>  next(transpose_start.begin(), transpose_start.end() - 1);
+    std::vector<unsigned int> reached_in_block(n_coarse_local, numbers::invalid_unsigned_int);
+    std::vector<unsigned int> reached;
+    std::vector<std::size_t>  block_start;
+    std::vector<unsigned int> block_length, block_columns;
+    std::vector<double>       block_values;
+    const auto                n_fine = static_cast<unsigned int>(product_row_length.size());
+    for (unsigned int r0 = 0; r0 < n_fine; r0 += block_rows)
+      {
+        const unsigned int r1 = std::min(n_fine, r0 + block_rows);
+        block_start.assign(1, 0);
+        for (unsigned int r = r0; r < r1; ++r)
+          block_start.push_back(block_start.back() + product_row_length[r]);
+        block_length.resize(r1 - r0);
+        block_columns.resize(block_start.back());
+        block_values.resize(block_start.back());
+
+        // the block's rows of A P, each summed over the nonzeros of A's
+        // row in their order
+        for_subranges(
+          r0,
+          r1,
+          [&](const unsigned int begin, const unsigned int end) {
+            ProductWork &w = thread_work.get();
+            for (unsigned int r = begin; r < end; ++r)
+              {
+                unsigned int *     columns = block_columns.data() + block_start[r - r0];
+                double *           values  = block_values.data() + block_start[r - r0];
+                const unsigned int room    = product_row_length[r];
+                unsigned int       n       = 0;
+                for (auto a = A.begin(r); a != A.end(r); ++a)
+                  if (a->value() != 0.)
+                    for (auto p = P.begin(a->column()); p != P.end(a->column()); ++p)
+                      {
+                        const unsigned int c = p->column();
+                        if (w.reached_by[c] != r)
+                          {
+                            AssertThrow(n < room,
+                                        ExcMessage("GalerkinProduct: A or P is not on the "
+                                                   "pattern given to initialize()"));
+                            w.reached_by[c] = r;
+                            columns[n++]    = c;
+                          }
+                        w.row[c] += a->value() * P_values[p->global_index()];
+                      }
+                for (unsigned int q = 0; q < n; ++q)
+                  {
+                    values[q]                = w.row[columns[q]];
+                    w.row[columns[q]]        = 0.;
+                    w.reached_by[columns[q]] = numbers::invalid_unsigned_int;
+                  }
+                block_length[r - r0] = n;
+              }
+          },
+          200);
+
+        // their parts of P^T (A P), added to every coarse row they reach
+        reached.clear();
+        for (unsigned int r = r0; r < r1; ++r)
+          for (auto p = P.begin(r); p != P.end(r); ++p)
+            if (reached_in_block[p->column()] != r0)
+              {
+                reached_in_block[p->column()] = r0;
+                reached.push_back(p->column());
+              }
+        for_subranges(
+          0u,
+          static_cast<unsigned int>(reached.size()),
+          [&](const unsigned int begin, const unsigned int end) {
+            std::vector<double> &row = thread_work.get().row;
+            for (unsigned int i = begin; i < end; ++i)
+              {
+                const unsigned int j = reached[i];
+                move_sums(j, row, true);
+                std::size_t k = next[j];
+                for (; k < transpose_start[j + 1] && transpose_row[k] < r1; ++k)
+                  {
+                    const double p = P_values[transpose_position[k]];
+                    if (p != 0.)
+                      {
+                        const unsigned int b = transpose_row[k] - r0;
+                        for (std::size_t q = block_start[b]; q < block_start[b] + block_length[b];
+                             ++q)
+                          row[block_columns[q]] += p * block_values[q];
+                      }
+                  }
+                next[j] = k;
+                move_sums(j, row, false);
+              }
+          },
+          64);
+      }
+
+    // a nonzero outside the result's pattern is an error
+    for (const double value : extra_values)
+      {
+        AssertThrow(value == 0., ExcMessage(outside_pattern));
+      }
     add_ghost_parts(galerkin);
   }
-
-
-  void
-  GalerkinProduct::row_of_result(const unsigned int j, std::vector<double> &row) const
-  {
-    // row j of P^T product from the rows of product at column j of P
-    for (std::size_t k = transpose_start[j]; k < transpose_start[j + 1]; ++k)
-      {
-        const double p = P_values[transpose_position[k]];
-        if (p != 0.)
-          {
-            const unsigned int r = transpose_row[k];
-            for (auto e = product.begin(r); e != product.end(r); ++e)
-              row[e->column()] += p * e->value();
-          }
-      }
-  }
-
 
   void
   GalerkinProduct::add_ghost_parts(SparseMatrix<double> &galerkin)
@@ -335,7 +423,7 @@ namespace FoslsContact
     return memory_consumption(P_values) + memory_consumption(transpose_start) +
            memory_consumption(transpose_row) + memory_consumption(transpose_position) +
            memory_consumption(extra_start) + memory_consumption(extra_columns) +
-           product_sparsity.memory_consumption() + product.memory_consumption() +
+           memory_consumption(product_row_length) +
            memory_consumption(ghost_row) + memory_consumption(ghost_start) +
            memory_consumption(ghost_columns) + memory_consumption(ghost_values);
   }

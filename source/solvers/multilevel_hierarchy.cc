@@ -1,6 +1,7 @@
 #include <deal.II/base/memory_consumption.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <fosls_contact/qp/matrix_list_memory.h>
 #include <fosls_contact/solvers/multilevel_hierarchy.h>
 
 namespace FoslsContact
@@ -61,7 +62,7 @@ namespace FoslsContact
                         // (the finest level relaxes everywhere: its
                         // smoother is the one that sees the true
                         // constraints at every DoF)
-                        meshes.is_uniform(l) || l == meshes.finest_level() ? -1 : int(l)});
+                        !meshes.level(l).active_mesh || l == meshes.finest_level() ? -1 : int(l)});
     build(levels);
   }
 
@@ -120,10 +121,7 @@ namespace FoslsContact
   std::size_t
   MultilevelHierarchy<dim>::memory_consumption() const
   {
-    std::size_t bytes = 0;
-    for (unsigned int l = 0; l < rotated.size(); ++l)
-      if (rotated[l])
-        bytes += rotated[l]->memory_consumption() + rotated_sparsity[l]->memory_consumption();
+    std::size_t bytes = matrix_list_memory_consumption(rotated, rotated_sparsity);
     for (const VertexPatches<dim> &patches : level_patches)
       bytes += MemoryConsumption::memory_consumption(patches.patches) +
                MemoryConsumption::memory_consumption(patches.colors);

@@ -56,8 +56,6 @@ namespace FoslsContact
       return *sources[l].discretization;
     }
     unsigned int index(const unsigned int l) const { return sources[l].index; }
-    /** Whether level @p l is one of the uniformly refined levels. */
-    bool is_uniform(const unsigned int l) const { return !sources[l].discretization->level(sources[l].index).active_mesh; }
     const LevelData<dim> &level(const unsigned int l) const
     {
       return sources[l].discretization->level(sources[l].index);

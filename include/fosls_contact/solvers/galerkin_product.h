@@ -20,14 +20,20 @@ namespace FoslsContact
    * the finest levels the products are recomputed whenever the truncation
    * changes, which made them a fifth of the solve time at level 9).
    *
-   * The product A P~ is computed by the owned rows of A; P~^T (A P~) by
-   * rows of the result, i.e. by columns of P~ (over the owned rows of P~),
-   * for which the pattern of P~ is transposed once in initialize(). A
-   * coarse row this process does not own gets only part of its sum here;
-   * the parts go to the row's owner, which adds them to its own part in
-   * the order of the sending processes. Every entry is thus summed in a
-   * fixed order: the result does not depend on the number of threads
-   * (with several processes, the partition fixes the order of the parts).
+   * The product A P~ is not stored: it would be the largest matrix of the
+   * multigrid after the patch smoothers (a fine row of A P~ reaches the
+   * coarse functions of all cells around the row's DoF). compute() takes
+   * the owned fine rows in blocks of block_rows: it computes the rows of
+   * A P~ of a block in parallel into a buffer, then adds their part of
+   * P~^T (A P~) to every coarse row they reach, in parallel over those
+   * rows, for which the pattern of P~ is transposed once in initialize().
+   * Every entry of the result is thus the sum over its fine rows in
+   * increasing order, each term p_rj (A P~)_rc computed as a whole row of
+   * A P~ would be: the result does not depend on the number of threads
+   * or on the blocks. A coarse row this process does not own gets only
+   * part of its sum here; the parts go to the row's owner, which adds them
+   * to its own part in the order of the sending processes (with several
+   * processes, the partition fixes the order of the parts).
    *
    * The coarse operator is stored on the coupling pattern of the coarse
    * level's cells (AlgebraicLevel::sparsity): a coarse basis function
@@ -65,7 +71,7 @@ namespace FoslsContact
      */
     void Tvmult(LevelVector &dst, const LevelVector &src) const;
 
-    /** The bytes of A P (values and pattern) and of the index arrays. */
+    /** The bytes of the index arrays (A P is not kept, see the class). */
     std::size_t memory_consumption() const;
 
   private:
@@ -74,8 +80,6 @@ namespace FoslsContact
     /** send_to and receive_from. Collective. */
     void set_up_ghost_messages(const Utilities::MPI::Partitioner &coarse_partitioner,
                                const SparsityPattern &            coarse_pattern);
-    /** Add row @p j of P^T (A P) to the dense @p row. */
-    void row_of_result(const unsigned int j, std::vector<double> &row) const;
     /**
      * Send the parts of the ghost rows to their owners and add the parts
      * of the others to the owned rows of @p galerkin. Collective.
@@ -99,9 +103,12 @@ namespace FoslsContact
      */
     std::vector<std::size_t>  extra_start;
     std::vector<unsigned int> extra_columns;
-    /** A P, owned fine rows by local coarse columns. */
-    SparsityPattern           product_sparsity;
-    SparseMatrix<double>      product;
+    /**
+     * The number of entries of every owned fine row of A P on the patterns
+     * (at most that many are nonzero): the room of a row in compute()'s
+     * buffer.
+     */
+    std::vector<unsigned int> product_row_length;
     unsigned int              n_coarse_local = 0, n_coarse_owned = 0;
 
     /**

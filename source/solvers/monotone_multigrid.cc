@@ -68,7 +68,7 @@ namespace FoslsContact
     // (the pre- and post-smoother share their patches)
     multilevel.memory = {
       {"multigrid: patch smoothers", pre_smoother.memory_consumption()},
-      {"multigrid: Galerkin products (A P)", operators.product_memory_consumption()},
+      {"multigrid: Galerkin products (index arrays)", operators.product_memory_consumption()},
       {"multigrid: Galerkin operators, truncated prolongations", operators.memory_consumption()},
       {"multigrid: rotated prolongations, vertex patches", hierarchy.memory_consumption()}};
     if (level_meshes)

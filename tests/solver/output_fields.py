@@ -128,7 +128,7 @@ memory = square["memory_mb"]
 check(set(memory) >= {"mesh and DoF handler", "level data (coupling patterns, roles, bounds)",
                       "prolongations of the uniform levels",
                       "assembled problem (A, parts of J, vectors)", "multigrid: patch smoothers",
-                      "multigrid: Galerkin products (A P)"}
+                      "multigrid: Galerkin products (index arrays)"}
       and all(v > 0 for v in memory.values())
       and sum(memory.values()) <= square["peak_rss_mb"],
       "SI square: memory_mb has the structures' memory, each positive, together below "

@@ -138,7 +138,7 @@ namespace FoslsContact
                                     const LevelVector &         v,
                                     const LevelVector &         r_coarse) const;
 
-    /** The bytes of the Galerkin products' structures (A P of every level). */
+    /** The bytes of the Galerkin products' index arrays (every level). */
     std::size_t product_memory_consumption() const;
     /** The bytes of the Galerkin operators and the truncated prolongations. */
     std::size_t memory_consumption() const;

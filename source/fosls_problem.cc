@@ -123,6 +123,15 @@ namespace FoslsContact
     Timer              wall;
     solver = SolverChoice<dim>::make(
       parameters.solver, *discretization, *transfer, qp, discretization->finest_level());
+    // the multigrid solve does not need the finest level's coupling
+    // pattern (the checks that factorize on it are done; the cross check's
+    // active set method and a one-level solve's coarse solver need it)
+    if (parameters.solver.type == Parameters::Solver::Type::monotone_multigrid &&
+        !parameters.solver.cross_check && discretization->finest_level() > 0)
+      {
+        discretization->release_coupling_pattern(discretization->finest_level());
+        qp.coupling_sparsity = nullptr;
+      }
     time_setup += wall.wall_time();
   }
 

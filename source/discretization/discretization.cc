@@ -369,6 +369,15 @@ namespace FoslsContact
     return bytes;
   }
 
+  template <int dim>
+  void
+  Discretization<dim>::release_coupling_pattern(const unsigned int l)
+  {
+    // (a pattern of no rows holds no arrays)
+    levels[l].sparsity.reinit(0, 0, 0);
+  }
+
+
   template class Discretization<2>;
   template class Discretization<3>;
 } // namespace FoslsContact

@@ -136,7 +136,8 @@ namespace FoslsContact
       }
     auto collect = [&](const auto &mine) { return gather_parts(comm, mine); };
     const auto matrix_parts   = collect(owned_entries(qp.matrix.get_sparsity_pattern(), &qp.matrix, p));
-    const auto coupling_parts = collect(owned_entries(*qp.coupling_sparsity, nullptr, p));
+    const auto coupling_parts = collect(owned_entries(
+      qp.coupling_sparsity ? *qp.coupling_sparsity : qp.matrix.get_sparsity_pattern(), nullptr, p));
     const auto role_parts = collect(owned_roles(qp.role, p.locally_owned_size()));
     const LevelVector b = gather(qp.rhs), fixed = gather(qp.fixed_values),
                       ub = gather(qp.upper_bounds);

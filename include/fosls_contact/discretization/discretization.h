@@ -152,6 +152,19 @@ namespace FoslsContact
      */
     std::size_t level_memory_consumption() const;
 
+    /**
+     * Free the DoF coupling pattern of level @p l (LevelData::sparsity).
+     * It is needed to assemble the level and by the solvers that factorize
+     * its matrix (the active set method and the definiteness check order
+     * their factorization by it); the multigrid method works on the
+     * assembled matrix's own pattern of nonzeros. On the finest level it
+     * is the largest part of the level data (a 3D vertex couples with 27
+     * vertices and 36 faces, 4 bytes per column), which the multigrid
+     * solve then does not hold. Setting the levels up again (refine())
+     * builds it again.
+     */
+    void release_coupling_pattern(const unsigned int l);
+
   private:
     /**
      * The level data of level @p l: map_level_dofs(), then the roles,

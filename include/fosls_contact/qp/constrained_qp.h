@@ -64,7 +64,8 @@ namespace FoslsContact
     /**
      * The DoF coupling pattern of the level (AlgebraicLevel::sparsity, set
      * by reinit()), which holds A's pattern: the direct solver factorizes
-     * on it (see SparseDirectSolver::initialize()).
+     * on it (see SparseDirectSolver::initialize()). Null once the pattern
+     * is freed for a multigrid solve (Discretization::release_coupling_pattern()).
      */
     const SparsityPattern *coupling_sparsity = nullptr;
     /** The level's partitioner: owned and ghost DoFs. */

@@ -160,9 +160,9 @@ namespace FoslsContact
   namespace
   {
     /**
-     * Owned fine rows per block of compute(). The buffer of a block's rows
-     * of A P then holds about 16384 times 60-90 entries in 3D (12-16 MB)
-     * instead of the product of the whole level; a coarse row is reached
+     * Owned fine rows per block of compute(): the buffer holds the rows
+     * of A P of one block (12 bytes per entry: column and value) instead
+     * of the product of the whole level, a few MB; a coarse row is reached
      * by a few blocks, and each visit loads and stores its partial sums
      * once.
      */

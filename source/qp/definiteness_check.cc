@@ -3,6 +3,7 @@
 
 #include <fosls_contact/qp/definiteness_check.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -52,23 +53,36 @@ namespace FoslsContact
     SparseDirectSolver direct;
     direct.initialize(M, qp.partitioner, qp.coupling_sparsity);
 
-    const unsigned int       nc = contact.size();
+    // the columns of S in blocks, each block solved at once
+    constexpr unsigned int   block = 64;
+    const unsigned int       nc    = contact.size();
     LAPACKFullMatrix<double> S(nc, nc);
-    LevelVector column = qp.new_vector(), y = qp.new_vector(), Ay = qp.new_vector();
-    for (unsigned int c = 0; c < nc; ++c)
+    std::vector<LevelVector> columns(std::min(block, nc), qp.new_vector()), ys(columns);
+    LevelVector              Ay = qp.new_vector();
+    for (unsigned int first = 0; first < nc; first += block)
       {
-        // column = A_IC e_c
-        column = 0;
-        for (auto e = A.begin(contact[c]); e != A.end(contact[c]); ++e)
-          if (qp.role[e->column()] == DoFRole::free)
-            column.local_element(e->column()) = e->value(); // A symmetric
-        direct.vmult(y, column);
-        for (types::global_dof_index i = 0; i < n; ++i)
-          if (qp.role[i] != DoFRole::free)
-            y.local_element(i) = 0;
-        vmult(A, Ay, y);
-        for (unsigned int r = 0; r < nc; ++r)
-          S(r, c) = A.el(contact[r], contact[c]) - Ay.local_element(contact[r]);
+        const unsigned int n_columns = std::min(block, nc - first);
+        columns.resize(n_columns);
+        ys.resize(n_columns);
+        for (unsigned int k = 0; k < n_columns; ++k)
+          {
+            // column = A_IC e_c
+            columns[k] = 0;
+            for (auto e = A.begin(contact[first + k]); e != A.end(contact[first + k]); ++e)
+              if (qp.role[e->column()] == DoFRole::free)
+                columns[k].local_element(e->column()) = e->value(); // A symmetric
+          }
+        direct.vmult(ys, columns);
+        for (unsigned int k = 0; k < n_columns; ++k)
+          {
+            LevelVector &y = ys[k];
+            for (types::global_dof_index i = 0; i < n; ++i)
+              if (qp.role[i] != DoFRole::free)
+                y.local_element(i) = 0;
+            vmult(A, Ay, y);
+            for (unsigned int r = 0; r < nc; ++r)
+              S(r, first + k) = A.el(contact[r], contact[first + k]) - Ay.local_element(contact[r]);
+          }
       }
     for (unsigned int r = 0; r < nc; ++r)
       for (unsigned int c = 0; c < nc; ++c)

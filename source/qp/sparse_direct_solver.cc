@@ -3,6 +3,13 @@
 
 #include <fosls_contact/qp/sparse_direct_solver.h>
 
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Epetra_LinearProblem.h>
+#include <Epetra_MultiVector.h>
+
+#include <algorithm>
+
 namespace FoslsContact
 {
   namespace
@@ -13,9 +20,8 @@ namespace FoslsContact
       "'Functional weights' are not many orders of magnitude apart";
   } // namespace
 
-  SparseDirectSolver::SparseDirectSolver()
-    : control(1, 0)
-  {}
+  SparseDirectSolver::SparseDirectSolver() = default;
+  SparseDirectSolver::~SparseDirectSolver() = default;
 
 
   void
@@ -59,20 +65,27 @@ namespace FoslsContact
         matrix->set(p->local_to_global(i), columns.size(), columns.data(), values.data());
       }
     matrix->compress(VectorOperation::insert);
-    solver = std::make_unique<TrilinosWrappers::SolverDirect>(
-      control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
-    try
-      {
-        solver->initialize(*matrix);
-      }
-    catch (const ExceptionBase &)
-      {
-        // (deal.II's message is Trilinos' error number, -22: KLU found a
-        // zero pivot)
-        AssertThrow(false, ExcMessage(singular_matrix_message));
-      }
+    // (what deal.II's TrilinosWrappers::SolverDirect does, with the solver
+    // kept here for solves with several columns at once)
+    problem = std::make_unique<Epetra_LinearProblem>();
+    problem->SetOperator(const_cast<Epetra_CrsMatrix *>(&matrix->trilinos_matrix()));
+    Amesos factory;
+    solver.reset(factory.Create("Amesos_Klu", *problem));
+    AssertThrow(solver, ExcMessage("Trilinos' Amesos has no KLU"));
+    // (a nonzero error is Trilinos' -22: KLU found a zero pivot)
+    AssertThrow(solver->SymbolicFactorization() == 0 && solver->NumericFactorization() == 0,
+                ExcMessage(singular_matrix_message));
     x_t.reinit(owned, comm);
     b_t.reinit(owned, comm);
+  }
+
+
+  void
+  SparseDirectSolver::solve(Epetra_MultiVector &X_t, Epetra_MultiVector &B_t) const
+  {
+    problem->SetLHS(&X_t);
+    problem->SetRHS(&B_t);
+    AssertThrow(solver->Solve() == 0, ExcMessage(singular_matrix_message));
   }
 
 
@@ -83,15 +96,33 @@ namespace FoslsContact
     for (unsigned int i = 0; i < n; ++i)
       b_t[partitioner->local_to_global(i)] = b.local_element(i);
     b_t.compress(VectorOperation::insert);
-    try
-      {
-        solver->solve(x_t, b_t);
-      }
-    catch (const ExceptionBase &)
-      {
-        AssertThrow(false, ExcMessage(singular_matrix_message));
-      }
+    solve(x_t.trilinos_vector(), b_t.trilinos_vector());
     for (unsigned int i = 0; i < n; ++i)
       x.local_element(i) = x_t[partitioner->local_to_global(i)];
+  }
+
+
+  void
+  SparseDirectSolver::vmult(std::vector<LevelVector> &x, const std::vector<LevelVector> &b) const
+  {
+    // blocks of columns, so that the work vectors stay small next to A's
+    // factors (the owned entries are the Epetra vectors' local ones, in
+    // the same order)
+    constexpr unsigned int block = 64;
+    const unsigned int     n     = partitioner->locally_owned_size();
+    const Epetra_BlockMap &map  = x_t.trilinos_vector().Map();
+    AssertThrow(x.size() == b.size(), ExcDimensionMismatch(x.size(), b.size()));
+    for (std::size_t first = 0; first < b.size(); first += block)
+      {
+        const auto         columns = static_cast<int>(std::min<std::size_t>(block, b.size() - first));
+        Epetra_MultiVector X_t(map, columns), B_t(map, columns);
+        for (int k = 0; k < columns; ++k)
+          for (unsigned int i = 0; i < n; ++i)
+            B_t[k][i] = b[first + k].local_element(i);
+        solve(X_t, B_t);
+        for (int k = 0; k < columns; ++k)
+          for (unsigned int i = 0; i < n; ++i)
+            x[first + k].local_element(i) = X_t[k][i];
+      }
   }
 } // namespace FoslsContact

@@ -8,7 +8,6 @@
 #include <Epetra_LinearProblem.h>
 #include <Epetra_MultiVector.h>
 
-#include <algorithm>
 
 namespace FoslsContact
 {
@@ -75,54 +74,49 @@ namespace FoslsContact
     // (a nonzero error is Trilinos' -22: KLU found a zero pivot)
     AssertThrow(solver->SymbolicFactorization() == 0 && solver->NumericFactorization() == 0,
                 ExcMessage(singular_matrix_message));
-    x_t.reinit(owned, comm);
-    b_t.reinit(owned, comm);
   }
 
 
   void
-  SparseDirectSolver::solve(Epetra_MultiVector &X_t, Epetra_MultiVector &B_t) const
+  SparseDirectSolver::solve(const std::vector<LevelVector *> &      x,
+                            const std::vector<const LevelVector *> &b) const
   {
+    // (the owned entries are the Epetra vectors' local ones, in the same
+    // order)
+    const unsigned int n       = partitioner->locally_owned_size();
+    const int          columns = static_cast<int>(b.size());
+    const auto &       A       = matrix->trilinos_matrix();
+    Epetra_MultiVector X_t(A.DomainMap(), columns), B_t(A.RangeMap(), columns);
+    for (int k = 0; k < columns; ++k)
+      for (unsigned int i = 0; i < n; ++i)
+        B_t[k][i] = b[k]->local_element(i);
     problem->SetLHS(&X_t);
     problem->SetRHS(&B_t);
     AssertThrow(solver->Solve() == 0, ExcMessage(singular_matrix_message));
+    for (int k = 0; k < columns; ++k)
+      for (unsigned int i = 0; i < n; ++i)
+        x[k]->local_element(i) = X_t[k][i];
   }
 
 
   void
   SparseDirectSolver::vmult(LevelVector &x, const LevelVector &b) const
   {
-    const unsigned int n = partitioner->locally_owned_size();
-    for (unsigned int i = 0; i < n; ++i)
-      b_t[partitioner->local_to_global(i)] = b.local_element(i);
-    b_t.compress(VectorOperation::insert);
-    solve(x_t.trilinos_vector(), b_t.trilinos_vector());
-    for (unsigned int i = 0; i < n; ++i)
-      x.local_element(i) = x_t[partitioner->local_to_global(i)];
+    solve({&x}, {&b});
   }
 
 
   void
   SparseDirectSolver::vmult(std::vector<LevelVector> &x, const std::vector<LevelVector> &b) const
   {
-    // blocks of columns, so that the work vectors stay small next to A's
-    // factors (the owned entries are the Epetra vectors' local ones, in
-    // the same order)
-    constexpr unsigned int block = 64;
-    const unsigned int     n     = partitioner->locally_owned_size();
-    const Epetra_BlockMap &map  = x_t.trilinos_vector().Map();
     AssertThrow(x.size() == b.size(), ExcDimensionMismatch(x.size(), b.size()));
-    for (std::size_t first = 0; first < b.size(); first += block)
+    std::vector<LevelVector *>       to;
+    std::vector<const LevelVector *> from;
+    for (std::size_t k = 0; k < b.size(); ++k)
       {
-        const auto         columns = static_cast<int>(std::min<std::size_t>(block, b.size() - first));
-        Epetra_MultiVector X_t(map, columns), B_t(map, columns);
-        for (int k = 0; k < columns; ++k)
-          for (unsigned int i = 0; i < n; ++i)
-            B_t[k][i] = b[first + k].local_element(i);
-        solve(X_t, B_t);
-        for (int k = 0; k < columns; ++k)
-          for (unsigned int i = 0; i < n; ++i)
-            x[first + k].local_element(i) = X_t[k][i];
+        to.push_back(&x[k]);
+        from.push_back(&b[k]);
       }
+    solve(to, from);
   }
 } // namespace FoslsContact

@@ -4,7 +4,6 @@
 #include <deal.II/base/partitioner.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 
 #include <fosls_contact/qp/level_algebra.h>
 
@@ -47,24 +46,24 @@ namespace FoslsContact
     /** x = A^{-1} b (owned entries) with the factorization of initialize(). */
     void vmult(LevelVector &x, const LevelVector &b) const;
     /**
-     * x[k] = A^{-1} b[k] for all k, in one call of the direct solver per
-     * block of columns: KLU then reads its factors once per block instead
-     * of once per column (the definiteness check solves once per contact
-     * DoF). Each column gets the same result as vmult(). Collective.
+     * x[k] = A^{-1} b[k] for all k, in one call of the direct solver: KLU
+     * then reads its factors once for all columns instead of once per
+     * column (the definiteness check solves once per contact DoF, in
+     * blocks). Each column gets the same result as vmult() of it alone.
+     * Collective.
      */
     void vmult(std::vector<LevelVector> &x, const std::vector<LevelVector> &b) const;
 
     ~SparseDirectSolver();
 
   private:
-    /** Solve for the columns of X_t with the right-hand sides in B_t. */
-    void solve(Epetra_MultiVector &X_t, Epetra_MultiVector &B_t) const;
+    /** *x[k] = A^{-1} *b[k]: the owned entries through Epetra's vectors. */
+    void solve(const std::vector<LevelVector *> &x, const std::vector<const LevelVector *> &b) const;
 
     std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
     std::unique_ptr<TrilinosWrappers::SparseMatrix>    matrix;
     std::unique_ptr<Epetra_LinearProblem>              problem;
     std::unique_ptr<Amesos_BaseSolver>                 solver;
-    mutable TrilinosWrappers::MPI::Vector              x_t, b_t;
   };
 } // namespace FoslsContact
 

@@ -268,6 +268,26 @@ namespace FoslsContact
           pcout << ' ' << std::setprecision(8) << force[d];
         pcout << std::defaultfloat << std::endl;
       }
+    row.reference = reference_solved;
+    if (parameters.adaptivity.reference_refinements > 0)
+      {
+        if (!reference_solved)
+          step_solutions.push_back(cartesian);
+        else
+          {
+            for (unsigned int s = 0; s < step_solutions.size(); ++s)
+              {
+                const ErrorNorms e = post.difference(cartesian, step_solutions[s]);
+                steps.set_reference_errors(s, e.u_h1(), e.sigma_hdiv());
+                pcout << "Step " << s << " against the reference: |u_ref - u_h|_H1 = "
+                      << std::scientific << std::setprecision(4) << e.u_h1()
+                      << ", |sigma_ref - sigma_h|_Hdiv = " << e.sigma_hdiv()
+                      << ", efficiency index " << std::fixed << std::setprecision(3)
+                      << steps.at(s).efficiency_index() << std::defaultfloat << std::endl;
+              }
+            step_solutions.clear();
+          }
+      }
     post.write_step(solution, *indicators, step, output);
     steps.add(row);
   }
@@ -277,16 +297,64 @@ namespace FoslsContact
   bool
   FoslsProblem<dim>::refine()
   {
-    TimerOutput::Scope t(timer, "Refinement");
-    Timer              wall;
     Vector<float> criteria(discretization->get_triangulation().n_active_cells());
     for (const auto &cell : discretization->get_triangulation().active_cell_iterators())
       if (cell->is_locally_owned())
         criteria[cell->active_cell_index()] = indicators->squared(cell->active_cell_index());
-    carried = solution;
-    discretization->rotate_to_cartesian(discretization->finest_level(), carried);
-    carried = discretization->to_active(carried);
-    const bool refined = discretization->refine(criteria, parameters.adaptivity, &carried);
+    return refine_carrying(criteria, parameters.adaptivity, true);
+  }
+
+
+  template <int dim>
+  bool
+  FoslsProblem<dim>::reference_pending() const
+  {
+    // (not after a solve that did not converge: the loop ends there)
+    return parameters.adaptivity.reference_refinements > 0 && !reference_solved &&
+           steps.size() > 0 && steps.back().converged;
+  }
+
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::refine_for_reference()
+  {
+    // every cell, as often as asked, whatever the DoF budget; the solution
+    // is carried from one refinement to the next (it starts the reference
+    // solve)
+    Parameters::Adaptivity everywhere;
+    everywhere.steps    = 1;
+    everywhere.marking  = Parameters::Adaptivity::Marking::fixed_fraction;
+    everywhere.fraction = 1;
+    everywhere.max_dofs = 0;
+    for (unsigned int r = 0; r < parameters.adaptivity.reference_refinements; ++r)
+      {
+        Vector<float> criteria(discretization->get_triangulation().n_active_cells());
+        criteria = 1;
+        refine_carrying(criteria, everywhere, r == 0);
+      }
+    reference_solved = true;
+  }
+
+
+  template <int dim>
+  bool
+  FoslsProblem<dim>::refine_carrying(const Vector<float> &         criteria,
+                                     const Parameters::Adaptivity &marking,
+                                     const bool                    from_solution)
+  {
+    TimerOutput::Scope t(timer, "Refinement");
+    Timer              wall;
+    if (from_solution)
+      {
+        carried = solution;
+        discretization->rotate_to_cartesian(discretization->finest_level(), carried);
+        carried = discretization->to_active(carried);
+      }
+    std::vector<LevelVector *> functions{&carried};
+    for (auto &s : step_solutions)
+      functions.push_back(&s);
+    const bool refined = discretization->refine(criteria, marking, functions);
     time_setup += wall.wall_time();
     return refined;
   }
@@ -383,19 +451,29 @@ namespace FoslsContact
         phase("Output", [&] {
           output_step(output);
           steps.set_step_time(step_wall.wall_time());
-          further = steps.go_on(parameters.adaptivity, adaptive_stop);
-          if (!further)
+          further = !reference_solved && steps.go_on(parameters.adaptivity, adaptive_stop);
+          if (!further && !reference_pending())
             finish(output);
         });
-        if (!further)
+        if (!further && !reference_pending())
           break;
         bool refined = false;
-        phase("Refinement", [&] { refined = refine(); });
+        if (further)
+          {
+            phase("Refinement", [&] { refined = refine(); });
+            if (!refined)
+              adaptive_stop = "the next mesh could have more than Adaptivity/Max DoFs DoFs";
+            if (!refined && !reference_pending())
+              {
+                phase("Output", [&] { finish(output); });
+                break;
+              }
+          }
         if (!refined)
           {
-            adaptive_stop = "the next mesh could have more than Adaptivity/Max DoFs DoFs";
-            phase("Output", [&] { finish(output); });
-            break;
+            phase("Refinement", [&] { refine_for_reference(); });
+            pcout << "The reference: the last mesh refined everywhere "
+                  << parameters.adaptivity.reference_refinements << " time(s)" << std::endl;
           }
         const auto &fine = discretization->level(discretization->finest_level());
         pcout << "Adaptive step " << step + 1 << ": "

@@ -78,6 +78,23 @@ namespace FoslsContact
      */
     bool refine();
     /**
+     * Adaptivity/Reference refinements: refine every cell of the last
+     * mesh that many times, carrying the solution (the reference solve's
+     * start) and every step's solution (step_solutions) over.
+     */
+    void refine_for_reference();
+    /**
+     * Refine by @p criteria as @p marking says, carrying the solution
+     * (made Cartesian and active first if @p from_solution, else the one
+     * carried before) and step_solutions over; false if nothing was
+     * refined (the DoF budget).
+     */
+    bool refine_carrying(const Vector<float> &         criteria,
+                         const Parameters::Adaptivity &marking,
+                         const bool                    from_solution);
+    /** Whether the run asks for a reference and has not solved it yet. */
+    bool reference_pending() const;
+    /**
      * The start of a step after the first: the previous solution,
      * interpolated to the refined mesh, in the rotated basis (the solver
      * projects it onto the contact constraints).
@@ -108,6 +125,13 @@ namespace FoslsContact
     unsigned int                         step = 0;
     /** The last solution, Cartesian, carried over to the refined mesh. */
     LevelVector                          carried;
+    /**
+     * Adaptivity/Reference refinements: every step's solution (Cartesian,
+     * scene units, as solution_in_scene_units()), carried over to every
+     * refined mesh, and whether the last solve was the reference's.
+     */
+    std::vector<LevelVector>             step_solutions;
+    bool                                 reference_solved = false;
     /** Why the adaptive loop stopped. */
     std::string                          adaptive_stop;
     /** The uniform levels the definiteness check passed (ProblemChecks). */

@@ -89,22 +89,22 @@ namespace FoslsContact
 
   template <int dim>
   bool
-  Discretization<dim>::refine(const Vector<float> &         criteria,
-                              const Parameters::Adaptivity &adaptivity,
-                              LevelVector *                 carried)
+  Discretization<dim>::refine(const Vector<float> &              criteria,
+                              const Parameters::Adaptivity &     adaptivity,
+                              const std::vector<LevelVector *> &carried)
   {
     AssertThrow(Utilities::MPI::n_mpi_processes(get_communicator()) == 1,
                 ExcMessage("adaptive refinement ('Adaptivity/Steps' > 0) runs on one MPI "
                            "process"));
     if (!mark_for_refinement(triangulation, criteria, adaptivity, dof_handler.n_dofs()))
       return false;
-    RefinementTransfer<dim> carry;
-    if (carried)
-      carry.prepare(dof_handler, *carried);
+    std::vector<RefinementTransfer<dim>> carry(carried.size());
+    for (unsigned int i = 0; i < carried.size(); ++i)
+      carry[i].prepare(dof_handler, *carried[i]);
     triangulation.execute_coarsening_and_refinement();
     setup_dofs_and_levels();
-    if (carried)
-      carry.interpolate(dof_handler, mapping, active_partitioner, *carried);
+    for (unsigned int i = 0; i < carried.size(); ++i)
+      carry[i].interpolate(dof_handler, mapping, active_partitioner, *carried[i]);
     return true;
   }
 

@@ -42,6 +42,19 @@ namespace FoslsContact
                         Patterns::Double(0),
                         "Stop once sqrt(J) (in the scene's units, J as printed) is at most "
                         "this; 0: no target.");
+      prm.declare_entry("Reference refinements",
+                        "0",
+                        Patterns::Integer(0, 3),
+                        "For scenes without an exact solution: once the loop has stopped, "
+                        "refine every cell of the last mesh this many times and solve "
+                        "there (the reference, the last row of the step table, not limited "
+                        "by Max DoFs: about 2^(dim R) times the last mesh's DoFs). Every "
+                        "step's solution is carried over to the reference mesh, which "
+                        "contains every earlier mesh, and its error against the reference "
+                        "is reported: |u_ref - u_h|_H1, |sigma_ref - sigma_h|_Hdiv and the "
+                        "efficiency index sqrt(J) / sqrt(|..|_H1^2 + |..|_Hdiv^2). The "
+                        "reference's own error is in these figures, most for the last "
+                        "steps. 0: no reference.");
       prm.leave_subsection();
     }
 
@@ -54,9 +67,13 @@ namespace FoslsContact
       fraction               = prm.get_double("Fraction");
       max_dofs               = prm.get_integer("Max DoFs");
       target_root_functional = prm.get_double("Target sqrt(J)");
+      reference_refinements  = prm.get_integer("Reference refinements");
       prm.leave_subsection();
       AssertThrow(fraction > 0,
                   ExcMessage("parameter 'Adaptivity/Fraction' must be in (0, 1]"));
+      AssertThrow(reference_refinements == 0 || steps > 0,
+                  ExcMessage("parameter 'Adaptivity/Reference refinements' > 0 needs "
+                             "'Adaptivity/Steps' > 0 (the reference ends an adaptive run)"));
     }
   } // namespace Parameters
 } // namespace FoslsContact

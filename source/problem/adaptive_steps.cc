@@ -8,6 +8,15 @@
 
 namespace FoslsContact
 {
+  double
+  AdaptiveSteps::Step::efficiency_index() const
+  {
+    return std::sqrt(std::max(0., functional)) /
+           std::sqrt(reference_error_u_h1 * reference_error_u_h1 +
+                     reference_error_sigma_hdiv * reference_error_sigma_hdiv);
+  }
+
+
   bool
   AdaptiveSteps::go_on(const Parameters::Adaptivity &adaptivity, std::string &why) const
   {
@@ -54,7 +63,12 @@ namespace FoslsContact
              << ", \"energy_increases\": " << step.energy_increases
              << ", \"cross_check_functional\": " << json_number(step.cross_check_functional)
              << ", \"cross_check_solution\": " << json_number(step.cross_check_solution)
-             << ", \"time_cross_check_s\": " << json_number(step.time_cross_check_s) << "}";
+             << ", \"time_cross_check_s\": " << json_number(step.time_cross_check_s)
+             << ", \"reference\": " << (step.reference ? "true" : "false")
+             << ", \"reference_error_u_h1\": " << json_number(step.reference_error_u_h1)
+             << ", \"reference_error_sigma_hdiv\": "
+             << json_number(step.reference_error_sigma_hdiv)
+             << ", \"efficiency_index\": " << json_number(step.efficiency_index()) << "}";
         items.push_back(item.str());
       }
     return json_array(items);
@@ -71,7 +85,8 @@ namespace FoslsContact
       out << ",force_" << "xyz"[d];
     out << ",time_solve_s,time_step_s,hertz_pressure_error,hertz_pressure_error_boundary,"
            "error_u_h1,error_sigma_hdiv,cycles,energy_increases,cross_check_functional,"
-           "cross_check_solution,time_cross_check_s\n";
+           "cross_check_solution,time_cross_check_s,reference,reference_error_u_h1,"
+           "reference_error_sigma_hdiv,efficiency_index\n";
     out << std::setprecision(10);
     for (unsigned int s = 0; s < steps.size(); ++s)
       {
@@ -85,7 +100,9 @@ namespace FoslsContact
             << step.hertz_pressure_error << ',' << step.hertz_pressure_error_boundary << ','
             << step.error_u_h1 << ',' << step.error_sigma_hdiv << ',' << step.cycles << ','
             << step.energy_increases << ',' << step.cross_check_functional << ','
-            << step.cross_check_solution << ',' << step.time_cross_check_s << '\n';
+            << step.cross_check_solution << ',' << step.time_cross_check_s << ','
+            << (step.reference ? 1 : 0) << ',' << step.reference_error_u_h1 << ','
+            << step.reference_error_sigma_hdiv << ',' << step.efficiency_index() << '\n';
       }
     return out.str();
   }

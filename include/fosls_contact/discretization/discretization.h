@@ -97,14 +97,14 @@ namespace FoslsContact
      * nodes, and set the levels up again: the uniform ones, and the active
      * mesh as the finest. Returns false, refining nothing, if the refined
      * mesh could have more than Adaptivity/Max DoFs DoFs (bounded by the
-     * vertices and faces the marked cells add). @p carried, if given, is a function on
-     * the active mesh (Cartesian, in the active numbering, with its ghost
-     * values) and is replaced by its interpolant on the refined mesh
-     * (nested spaces: the same function). Collective.
+     * vertices and faces the marked cells add). Each of @p carried is a
+     * function on the active mesh (Cartesian, in the active numbering,
+     * with its ghost values) and is replaced by its interpolant on the
+     * refined mesh (nested spaces: the same function). Collective.
      */
-    bool refine(const Vector<float> &         criteria,
-                const Parameters::Adaptivity &adaptivity,
-                LevelVector *                 carried = nullptr);
+    bool refine(const Vector<float> &              criteria,
+                const Parameters::Adaptivity &     adaptivity,
+                const std::vector<LevelVector *> &carried = {});
     /**
      * Refine this uniformly refined mesh into the mesh of @p fine with
      * every cell finer than mesh level @p mesh_level replaced by its

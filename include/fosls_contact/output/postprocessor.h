@@ -75,6 +75,14 @@ namespace FoslsContact
     ErrorNorms errors(const LevelVector &solution) const;
 
     /**
+     * The same norms of the difference of two functions on this mesh,
+     * @p a - @p b (solution_in_scene_units() of two solutions, or one
+     * carried over from a coarser mesh): the error against a reference
+     * solution (Adaptivity/Reference refinements).
+     */
+    ErrorNorms difference(const LevelVector &a, const LevelVector &b) const;
+
+    /**
      * The largest |u| and von Mises stress of the solution_in_scene_units()
      * at the corners of the cells (where the Q1 and RT0 fields take their
      * extremes in a cell); collective.

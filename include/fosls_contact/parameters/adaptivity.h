@@ -32,6 +32,12 @@ namespace FoslsContact
       unsigned int max_dofs = 0;
       /** Stop once sqrt(J) is at most this, in the scene's units (0: never). */
       double       target_root_functional = 0;
+      /**
+       * After the loop: refine every cell of the last mesh this many
+       * times and solve there, the reference against which every step's
+       * error is measured (0: no reference).
+       */
+      unsigned int reference_refinements = 0;
 
       bool enabled() const { return steps > 0; }
 

@@ -56,6 +56,20 @@ namespace FoslsContact
       /** Scenes with an exact solution: |u - u_h|_H1 and |sigma - sigma_h|_Hdiv. */
       double error_u_h1       = std::numeric_limits<double>::quiet_NaN();
       double error_sigma_hdiv = std::numeric_limits<double>::quiet_NaN();
+      /**
+       * Adaptivity/Reference refinements: whether this row is the
+       * reference (the last mesh refined everywhere), and for the rows
+       * before it |u_ref - u_h|_H1 and |sigma_ref - sigma_h|_Hdiv (NaN
+       * without a reference).
+       */
+      bool   reference                     = false;
+      double reference_error_u_h1          = std::numeric_limits<double>::quiet_NaN();
+      double reference_error_sigma_hdiv    = std::numeric_limits<double>::quiet_NaN();
+      /**
+       * sqrt(J) / sqrt(|u_ref - u_h|_H1^2 + |sigma_ref - sigma_h|_Hdiv^2)
+       * (NaN without a reference).
+       */
+      double efficiency_index() const;
     };
 
     void add(const Step &step) { steps.push_back(step); }
@@ -71,6 +85,13 @@ namespace FoslsContact
     }
     unsigned int size() const { return steps.size(); }
     const Step & back() const { return steps.back(); }
+    const Step & at(const unsigned int s) const { return steps.at(s); }
+    /** The errors of step @p s against the reference (the last row). */
+    void set_reference_errors(const unsigned int s, const double u_h1, const double sigma_hdiv)
+    {
+      steps[s].reference_error_u_h1       = u_h1;
+      steps[s].reference_error_sigma_hdiv = sigma_hdiv;
+    }
 
     /**
      * Whether the adaptive loop goes on after the last step: not without

@@ -137,35 +137,50 @@ namespace FoslsContact
     // vertices of its own cells, whose cells are all here.
     const auto &dof_handler = discretization.get_dof_handler();
     const auto &data        = discretization.level(l);
-    std::map<unsigned int, VertexKey<dim>>                     key;
-    std::map<unsigned int, std::set<types::global_dof_index>> patch;
-    std::set<unsigned int>                                    relaxed;
+    // arrays over the triangulation's vertex indices (of all its levels)
+    // rather than maps of this level's vertices: a lookup per cell vertex
+    // was most of this constructor's time
+    const unsigned int        n_vertices = dof_handler.get_triangulation().n_vertices();
+    constexpr unsigned int    none       = numbers::invalid_unsigned_int;
+    std::vector<bool>         relaxed(n_vertices, false), owned(n_vertices, false);
+    std::vector<unsigned int> position(n_vertices, none); // in the key order
+    for (const unsigned int vertex : data.owned_cell_vertices)
+      owned[vertex] = true;
     data.for_each_cell(dof_handler, [&](const auto &cell) {
       if (at_cells_of_level < 0 || cell->level() == at_cells_of_level)
         for (const unsigned int v : cell->vertex_indices())
-          relaxed.insert(cell->vertex_index(v));
+          relaxed[cell->vertex_index(v)] = true;
     });
+    // every vertex of a cell here is an item of the level scheduling, a
+    // patch if a cell here owns it and it is relaxed
+    std::vector<std::pair<VertexKey<dim>, unsigned int>> order;
+    std::vector<unsigned int>                            patch_of(n_vertices, none);
+    std::vector<std::vector<types::global_dof_index>>    patch;
     data.for_each_cell(dof_handler, [&](const auto &cell) {
       for (const unsigned int v : cell->vertex_indices())
         {
           const unsigned int vertex = cell->vertex_index(v);
-          if (key.count(vertex) == 0)
-            key[vertex] = vertex_key<dim>(cell, v);
-          if (data.owned_cell_vertices.count(vertex) == 0 || relaxed.count(vertex) == 0)
+          if (position[vertex] == none)
+            {
+              position[vertex] = order.size();
+              order.emplace_back(vertex_key<dim>(cell, v), vertex);
+            }
+          if (!owned[vertex] || !relaxed[vertex])
             continue;
-          auto &p = patch[vertex];
-          for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) { p.insert(dof); });
+          if (patch_of[vertex] == none)
+            {
+              patch_of[vertex] = patch.size();
+              patch.emplace_back();
+            }
+          auto &p = patch[patch_of[vertex]];
+          for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) { p.push_back(dof); });
         }
     });
-
-    // every vertex of a cell here is an item of the level scheduling
-    std::vector<std::pair<VertexKey<dim>, unsigned int>> order;
-    for (const auto &[vertex, k] : key)
-      order.emplace_back(k, vertex);
+    // (distinct vertices have distinct keys; the index only makes the
+    // order independent of the cell order should two ever tie)
     std::sort(order.begin(), order.end(), [](const auto &a, const auto &b) {
-      return a.first < b.first;
+      return a.first < b.first || (!(b.first < a.first) && a.second < b.second);
     });
-    std::map<unsigned int, unsigned int> position;
     std::vector<types::global_dof_index> color_dof;
     for (const auto &[k, vertex] : order)
       {
@@ -192,10 +207,11 @@ namespace FoslsContact
       });
     std::vector<std::vector<unsigned int>> coupled(order.size());
     std::vector<types::global_dof_index>   dofs;
+    std::vector<unsigned int>              vertices;
     data.for_each_cell(dof_handler, [&](const auto &cell) {
-      std::set<unsigned int> vertices;
+      vertices.clear();
       for (const unsigned int v : cell->vertex_indices())
-        vertices.insert(cell->vertex_index(v));
+        vertices.push_back(cell->vertex_index(v));
       if (!master_vertices.empty())
         {
           data.get_local_dofs(cell, dofs);
@@ -205,23 +221,26 @@ namespace FoslsContact
               if (h != data.hanging.end())
                 for (const auto &master : h->second)
                   for (const unsigned int w : master_vertices.at(master.first))
-                    vertices.insert(w);
+                    vertices.push_back(w);
             }
         }
+      std::sort(vertices.begin(), vertices.end());
+      vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
       for (const unsigned int v : vertices)
         for (const unsigned int w : vertices)
           if (v != w)
-            coupled[position.at(v)].push_back(position.at(w));
+            coupled[position[v]].push_back(position[w]);
     });
     const std::vector<unsigned int> color =
       level_schedule(coupled, color_dof, data.partitioner);
 
     for (const auto &[k, vertex] : order)
       {
-        const auto it = patch.find(vertex);
-        if (it == patch.end())
+        if (patch_of[vertex] == none)
           continue;
-        std::vector<types::global_dof_index> dofs(it->second.begin(), it->second.end());
+        std::vector<types::global_dof_index> &dofs = patch[patch_of[vertex]];
+        std::sort(dofs.begin(), dofs.end());
+        dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
         if (std::none_of(dofs.begin(), dofs.end(), [&](const auto dof) {
               return dof < data.n_owned();
             }))
@@ -231,7 +250,7 @@ namespace FoslsContact
         std::sort(dofs.begin(), dofs.end(), [&](const auto a, const auto b) {
           return data.global(a) < data.global(b);
         });
-        patches.push_back(dofs);
+        patches.push_back(std::move(dofs));
         colors.push_back(color[position[vertex]]);
         n_colors = std::max(n_colors, color[position[vertex]] + 1);
       }

@@ -152,10 +152,12 @@ namespace FoslsContact
           relaxed[cell->vertex_index(v)] = true;
     });
     // every vertex of a cell here is an item of the level scheduling, a
-    // patch if a cell here owns it and it is relaxed
+    // patch if a cell here owns it and it is relaxed; the DoFs each cell
+    // gives a patch are gathered in one array (counted, then filled), not
+    // in a container per patch, whose many small blocks outlived this
+    // constructor as holes in the heap
     std::vector<std::pair<VertexKey<dim>, unsigned int>> order;
-    std::vector<unsigned int>                            patch_of(n_vertices, none);
-    std::vector<std::vector<types::global_dof_index>>    patch;
+    std::vector<std::size_t>                             start(n_vertices + 1, 0);
     data.for_each_cell(dof_handler, [&](const auto &cell) {
       for (const unsigned int v : cell->vertex_indices())
         {
@@ -165,17 +167,26 @@ namespace FoslsContact
               position[vertex] = order.size();
               order.emplace_back(vertex_key<dim>(cell, v), vertex);
             }
-          if (!owned[vertex] || !relaxed[vertex])
-            continue;
-          if (patch_of[vertex] == none)
-            {
-              patch_of[vertex] = patch.size();
-              patch.emplace_back();
-            }
-          auto &p = patch[patch_of[vertex]];
-          for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) { p.push_back(dof); });
+          if (owned[vertex] && relaxed[vertex])
+            for_patch_dofs_in_cell(data, cell, v, [&](const auto) { ++start[vertex + 1]; });
         }
     });
+    for (unsigned int vertex = 0; vertex < n_vertices; ++vertex)
+      start[vertex + 1] += start[vertex];
+    std::vector<types::global_dof_index> gathered(start.back());
+    {
+      std::vector<std::size_t> next(start.begin(), start.end() - 1);
+      data.for_each_cell(dof_handler, [&](const auto &cell) {
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const unsigned int vertex = cell->vertex_index(v);
+            if (owned[vertex] && relaxed[vertex])
+              for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) {
+                gathered[next[vertex]++] = dof;
+              });
+          }
+      });
+    }
     // (distinct vertices have distinct keys; the index only makes the
     // order independent of the cell order should two ever tie)
     std::sort(order.begin(), order.end(), [](const auto &a, const auto &b) {
@@ -234,11 +245,13 @@ namespace FoslsContact
     const std::vector<unsigned int> color =
       level_schedule(coupled, color_dof, data.partitioner);
 
+    std::vector<types::global_dof_index> patch_dofs;
     for (const auto &[k, vertex] : order)
       {
-        if (patch_of[vertex] == none)
+        if (start[vertex] == start[vertex + 1])
           continue;
-        std::vector<types::global_dof_index> &dofs = patch[patch_of[vertex]];
+        auto &dofs = patch_dofs;
+        dofs.assign(gathered.begin() + start[vertex], gathered.begin() + start[vertex + 1]);
         std::sort(dofs.begin(), dofs.end());
         dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
         if (std::none_of(dofs.begin(), dofs.end(), [&](const auto dof) {
@@ -250,7 +263,7 @@ namespace FoslsContact
         std::sort(dofs.begin(), dofs.end(), [&](const auto a, const auto b) {
           return data.global(a) < data.global(b);
         });
-        patches.push_back(std::move(dofs));
+        patches.emplace_back(dofs.begin(), dofs.end());
         colors.push_back(color[position[vertex]]);
         n_colors = std::max(n_colors, color[position[vertex]] + 1);
       }

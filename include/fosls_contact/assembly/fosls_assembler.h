@@ -7,6 +7,8 @@
 #include <fosls_contact/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
 
+#include <vector>
+
 namespace FoslsContact
 {
   template <int dim>
@@ -69,6 +71,13 @@ namespace FoslsContact
     const Discretization<dim> &discretization;
     const Parameters::Material material;
     const Parameters::Weights  weights;
+    /**
+     * The stress row of each shape function of a cell (an RT function of
+     * row m is nonzero in that row only), -1 for a displacement function:
+     * the other rows' values and divergences are exact zeros, which the
+     * cell terms neither evaluate nor multiply.
+     */
+    std::vector<int> stress_row;
   };
 } // namespace FoslsContact
 

@@ -228,17 +228,13 @@ namespace FoslsContact
     std::vector<bool>  held(n_local, false);
     for (unsigned int i = 0; i < n_owned; ++i)
       held[i] = true;
-    // (marked in an array over the vertex indices, then put into the set in
-    // order: a set lookup per cell vertex took longer than the rest)
-    std::vector<bool> owned_vertex(triangulation.n_vertices(), false);
+    std::vector<bool> &owned_vertex = data.owned_cell_vertices;
+    owned_vertex.assign(triangulation.n_vertices(), false);
     data.for_each_cell(dof_handler, [&](const auto &cell) {
       if (data.owns(cell))
         for (const unsigned int v : cell->vertex_indices())
           owned_vertex[cell->vertex_index(v)] = true;
     });
-    for (unsigned int v = 0; v < owned_vertex.size(); ++v)
-      if (owned_vertex[v])
-        data.owned_cell_vertices.insert(data.owned_cell_vertices.end(), v);
     data.for_each_cell(dof_handler, [&](const auto &cell) {
       for (const unsigned int v : cell->vertex_indices())
         if (owned_vertex[cell->vertex_index(v)])

@@ -142,10 +142,9 @@ namespace FoslsContact
     // was most of this constructor's time
     const unsigned int        n_vertices = dof_handler.get_triangulation().n_vertices();
     constexpr unsigned int    none       = numbers::invalid_unsigned_int;
-    std::vector<bool>         relaxed(n_vertices, false), owned(n_vertices, false);
+    const std::vector<bool> & owned = data.owned_cell_vertices;
+    std::vector<bool>         relaxed(n_vertices, false);
     std::vector<unsigned int> position(n_vertices, none); // in the key order
-    for (const unsigned int vertex : data.owned_cell_vertices)
-      owned[vertex] = true;
     data.for_each_cell(dof_handler, [&](const auto &cell) {
       if (at_cells_of_level < 0 || cell->level() == at_cells_of_level)
         for (const unsigned int v : cell->vertex_indices())

@@ -11,7 +11,6 @@
 
 #include <array>
 #include <map>
-#include <set>
 #include <vector>
 
 namespace FoslsContact
@@ -156,11 +155,13 @@ namespace FoslsContact
     /** face index -> its RT DoFs (stress row by row); local indices. */
     std::map<unsigned int, std::array<types::global_dof_index, dim>> face_dofs;
     /**
-     * The vertices of the cells this process owns on the level: it relaxes
-     * the patches there that have a DoF it owns, and all cells at them are
-     * here.
+     * Whether a vertex (by its index in the triangulation, of all levels)
+     * is a vertex of a cell this process owns on the level: it relaxes the
+     * patches there that have a DoF it owns, and all cells at them are
+     * here. (A bit per vertex of the triangulation; a set of this level's
+     * vertices took 40 bytes each.)
      */
-    std::set<unsigned int> owned_cell_vertices;
+    std::vector<bool> owned_cell_vertices;
   };
 
   /**

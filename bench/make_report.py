@@ -756,64 +756,21 @@ if speed:
               f"{speed[1]:.2f}x (solve time), {speed[2]:.2f}x (wall time incl. setup) → "
               f"**{'met' if speed[1] >= 5 else 'MISSED'}**.\n")
 
-# adaptive refinement: the runs of bench/adaptive.py (bench/results/adaptive/)
-ADA = os.path.join(RES, "adaptive")
-
-
-def adaptive_case(name):
-    """summary.json and the wall seconds of bench/adaptive.py's run @p name."""
-    path = os.path.join(ADA, name)
-    if not os.path.exists(os.path.join(path, "summary.json")):
-        return None, None
-    with open(os.path.join(path, "summary.json")) as f, \
-            open(os.path.join(path, "wall_s.txt")) as w:
-        return json.load(f), float(w.read())
-
-
+# adaptive refinement: bench/adaptive.py runs its own cases and writes its
+# own report; this section says where, so that its figures are in one place
+# (the report of the adaptive runs' last run), not copied here from another
 md.append("## g. Adaptive refinement (`bench/adaptive.py`)\n")
-md.append("Uniform refinement with the default solver against the adaptive loop "
-          "(`Adaptivity`, Dörfler theta = 0.5, the monotone multigrid on the levels of "
-          "the adaptive mesh); one run each. The full tables, the 3D ball, the reference "
-          "comparison and the estimator's efficiency index are in "
-          "`doc/adaptivity_results.md`, the multigrid against the active set solver on "
-          "the same meshes in `doc/adaptive_solvers_results.md`; pictures: "
-          "`doc/figures/adaptive_hertz.png`, `doc/figures/adaptive_l_shape.png`.\n")
-for lam in ["1", "inf"]:
-    body = []
-    for level in range(3, 8):
-        s, wall = adaptive_case("hertz_lambda_%s_uniform_L%d" % (lam, level))
-        if s is None and level == 7:
-            s, wall = adaptive_case("hertz_lambda_%s_reference_L7" % lam)
-        if s is not None:
-            body.append(["uniform level %d" % level, s["dofs"],
-                         g(s["hertz"]["pressure_error_boundary"], ".4f"), g(wall, ".1f")])
-    s, _ = adaptive_case("hertz_lambda_%s_adaptive" % lam)
-    if s is not None:
-        elapsed = 0.
-        for step in s["adaptive_steps"]:
-            elapsed += step["time_step_s"]
-            body.append(["adaptive step %d" % step["step"], step["dofs"],
-                         g(step["hertz_pressure_error_boundary"], ".4f"), g(elapsed, ".1f")])
-    if body:
-        md.append("Hertz half disc (`prm/hertz.prm`, `prm/hertz_adaptive.prm`), lambda = %s: "
-                  "relative L2 error of the contact pressure against Hertz's formula.\n" % lam)
-        md.append(table(["run", "DoFs", "pressure L2 error", "wall s (so far)"], body))
-        md.append("")
-s, _ = adaptive_case("l_shape_adaptive")
-if s is not None:
-    steps = s["adaptive_steps"]
-
-    def energy(t):
-        return math.hypot(t["error_u_h1"], t["error_sigma_hdiv"])
-    index = [math.sqrt(t["functional"]) / energy(t) for t in steps]
-    rate = (math.log(energy(steps[-1]) / energy(steps[8])) /
-            math.log(steps[-1]["dofs"] / steps[8]["dofs"]))
-    md.append("Singular solution on the L-shape (`prm/l_shape_singular.prm`, grad u ~ "
-              "r^(-1/3)): the adaptive error in H1 x H(div) falls like N^%.2f (steps 8 to "
-              "%d; uniform refinement N^(-1/3)), and the efficiency index sqrt(J) / error "
-              "stays between %.3f and %.3f on its %d meshes (steps 0 to %d).\n"
-              % (rate, steps[-1]["step"], min(index), max(index), len(steps),
-                 steps[-1]["step"]))
+md.append("Uniform refinement against the adaptive loop (`Adaptivity`, Dörfler theta = 0.5, "
+          "the monotone multigrid on the levels of the adaptive mesh) has its own script "
+          "and report: `bench/adaptive.py` writes `doc/adaptivity_results.md` (the Hertz "
+          "half disc with lambda = 1 and lambda = inf, and with a small contact zone, "
+          "against Hertz's formula and a fine reference; the 3D ball; the estimator's "
+          "efficiency index on the half disc, the manufactured solution and the singular "
+          "solution on the L-shape; each target marked met or missed), "
+          "`bench/adaptive_solvers.py` writes `doc/adaptive_solvers_results.md` (the "
+          "multigrid against the active set solver on the same meshes) and "
+          "`bench/figures.py` draws `doc/figures/adaptive_hertz.png` and "
+          "`doc/figures/adaptive_l_shape.png`.\n")
 
 skipped = [r for r in RUNS if r["status"] != "ok"]
 md.append("## Skipped or failed cases\n")

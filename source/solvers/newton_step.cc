@@ -139,7 +139,8 @@ namespace FoslsContact
       if (linear_role[i] == DoFRole::fixed)
         fixed.push_back(i);
     TruncatedOperator op{A, fixed, qp.new_vector()};
-    LevelVector increment = qp.new_vector(), rhs = qp.new_vector(), Ae = qp.new_vector();
+    LevelVector increment = qp.new_vector(), rhs = qp.new_vector(), Ae = qp.new_vector(),
+                solution = qp.new_vector();
     double      tolerance = 0;
     for (unsigned int round = 0; round < max_rounds + 1; ++round)
       {
@@ -164,7 +165,17 @@ namespace FoslsContact
           linear_multigrid.prepare(A, linear_role);
         SolverControl         control(parameters.krylov_steps, tolerance, false, false);
         SolverCG<LevelVector> cg(control);
-        d = 0;
+        // round 0 starts from zero; a later round from the last round's
+        // solution with the DoFs it fixed at zero: the residual of that is
+        // the local one next to them, not the whole Newton residual again
+        if (round == 0)
+          d = 0;
+        else
+          {
+            d = solution;
+            for (const auto i : fixed)
+              d.local_element(i) = 0;
+          }
         try
           {
             cg.solve(op, d, rhs, preconditioner);
@@ -173,6 +184,7 @@ namespace FoslsContact
           {
             // at most krylov_steps steps: the last iterate is the direction
           }
+        solution = d;
         d += increment;
         bool violated = false;
         for (unsigned int i = 0; round < max_rounds && i < n_owned; ++i)

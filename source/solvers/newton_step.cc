@@ -139,8 +139,7 @@ namespace FoslsContact
       if (linear_role[i] == DoFRole::fixed)
         fixed.push_back(i);
     TruncatedOperator op{A, fixed, qp.new_vector()};
-    LevelVector increment = qp.new_vector(), rhs = qp.new_vector(), Ae = qp.new_vector(),
-                solution = qp.new_vector();
+    LevelVector increment = qp.new_vector(), rhs = qp.new_vector(), Ae = qp.new_vector();
     double      tolerance = 0;
     for (unsigned int round = 0; round < max_rounds + 1; ++round)
       {
@@ -166,13 +165,14 @@ namespace FoslsContact
         SolverControl         control(parameters.krylov_steps, tolerance, false, false);
         SolverCG<LevelVector> cg(control);
         // round 0 starts from zero; a later round from the last round's
-        // solution with the DoFs it fixed at zero: the residual of that is
-        // the local one next to them, not the whole Newton residual again
+        // solution (d less its increment, which is zero off the fixed DoFs)
+        // with the DoFs it fixed at zero: the residual of that is the local
+        // one next to them, not the whole Newton residual again
         if (round == 0)
           d = 0;
         else
           {
-            d = solution;
+            d -= increment;
             for (const auto i : fixed)
               d.local_element(i) = 0;
           }
@@ -184,7 +184,6 @@ namespace FoslsContact
           {
             // at most krylov_steps steps: the last iterate is the direction
           }
-        solution = d;
         d += increment;
         bool violated = false;
         for (unsigned int i = 0; round < max_rounds && i < n_owned; ++i)

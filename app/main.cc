@@ -28,6 +28,7 @@
 #include <muParser.h>
 
 #include <csignal>
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 
@@ -35,6 +36,12 @@ int
 main(int argc, char *argv[])
 {
   using namespace FoslsContact;
+  // Started without mpirun, Open MPI's MPI_Init spawns a daemon (orted) for
+  // the single process, which the program never needs (it spawns no
+  // processes): the isolated singleton skips it, 0.06 s of every run
+  // (prm/square.prm, level 9: 4.79 s against 4.85 s). Under mpirun the
+  // variable is not read; a value the user set is kept.
+  setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
   // threads: as many as cores (or DEAL_II_NUM_THREADS) until the scene's
   // Solver/Threads says otherwise
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv,

@@ -35,8 +35,14 @@ namespace FoslsContact
       double                  value;
     };
     std::vector<types::global_dof_index> parent_dofs(n), child_dofs(n);
+    // the RT face flips of the cells of level l - 1, read when they were
+    // children (each cell's once, not again as a parent; `unread` where a
+    // cell was not a child here)
+    constexpr unsigned char    unread = 0xff;
+    std::vector<unsigned char> parent_flips, child_flips;
     for (unsigned int l = 1; l < n_levels; ++l)
       {
+        child_flips.assign(discretization.get_triangulation().n_cells(l), unread);
         const auto &           coarse = *discretization.level(l - 1).partitioner;
         const auto &           fine   = *discretization.level(l).partitioner;
         std::vector<Entry>     entries;
@@ -48,7 +54,11 @@ namespace FoslsContact
               cell->get_mg_dof_indices(parent_dofs);
               for (auto &dof : parent_dofs)
                 dof = coarse.global_to_local(dof);
-              const auto parent_signs = rt_signs(fe_face, cell);
+              const auto parent_signs =
+                rt_signs(fe,
+                         l > 1 && parent_flips[cell->index()] != unread ?
+                           parent_flips[cell->index()] :
+                           rt_face_flips(fe_face, cell));
               for (unsigned int c = 0; c < cell->n_children(); ++c)
                 {
                   if (!Discretization<dim>::is_present(cell->child(c)))
@@ -58,7 +68,9 @@ namespace FoslsContact
                   cell->child(c)->get_mg_dof_indices(child_dofs);
                   for (auto &dof : child_dofs)
                     dof = fine.global_to_local(dof);
-                  const auto child_signs = rt_signs(fe_face, cell->child(c));
+                  const unsigned int flips = rt_face_flips(fe_face, cell->child(c));
+                  child_flips[cell->child(c)->index()] = flips;
+                  const auto child_signs = rt_signs(fe, flips);
                   for (unsigned int i = 0; i < n; ++i)
                     for (unsigned int j = 0; j < n; ++j)
                       if (P(i, j) != 0)
@@ -75,6 +87,7 @@ namespace FoslsContact
         matrices[l] = std::make_unique<SparseMatrix<double>>(*sparsities[l]);
         for (const auto &e : entries)
           matrices[l]->set(e.row, e.column, e.value);
+        std::swap(parent_flips, child_flips);
       }
   }
 

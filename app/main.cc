@@ -38,14 +38,15 @@ main(int argc, char *argv[])
   using namespace FoslsContact;
   // Started without a launcher (mpirun, srun), the process is an MPI
   // singleton that talks to no other. For it Open MPI's MPI_Init spawns a
-  // daemon (orted) and probes the network fabrics (libfabric, PSM2) for
-  // its point-to-point layer, which took 0.23 s of every run here (an
-  // empty MPI program: 0.31 s, 0.023 s without both). The isolated
-  // singleton skips the daemon, the ob1 layer (the one Open MPI picks on
-  // one node anyway) the probes. A launched process keeps Open MPI's
-  // choices (a cluster's fabric), and so does a value the user set.
-  if (!std::getenv("OMPI_COMM_WORLD_SIZE") && !std::getenv("PMIX_RANK") &&
-      !std::getenv("PMI_RANK") && !std::getenv("PMI_SIZE"))
+  // daemon (orted) and loads the PSM/PSM2 transports of its cm layer, most
+  // of the time of a small run (doc/performance.md, section 3). The
+  // isolated singleton needs no daemon, and the ob1 layer suffices for a
+  // process without peers. A launched process keeps Open MPI's choices (a
+  // cluster's fabric), and so does a value the user set.
+  const bool launched = std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK") ||
+                        std::getenv("PMI_RANK") || std::getenv("PMI_SIZE") ||
+                        std::getenv("PMI_FD") || std::getenv("SLURM_STEP_NUM_TASKS");
+  if (!launched)
     {
       setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
       setenv("OMPI_MCA_pml", "ob1", 0);

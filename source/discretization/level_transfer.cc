@@ -42,7 +42,11 @@ namespace FoslsContact
     std::vector<unsigned char> parent_flips, child_flips;
     for (unsigned int l = 1; l < n_levels; ++l)
       {
-        child_flips.assign(discretization.get_triangulation().n_cells(l), unread);
+        // (indexed by cell->index(), which is below n_raw_cells(), not below
+        // n_cells(): a distributed mesh leaves unused indices; a process
+        // may have no cell on level l, and n_raw_cells() no such level)
+        const auto &tria = discretization.get_triangulation();
+        child_flips.assign(l < tria.n_levels() ? tria.n_raw_cells(l) : 0, unread);
         const auto &           coarse = *discretization.level(l - 1).partitioner;
         const auto &           fine   = *discretization.level(l).partitioner;
         std::vector<Entry>     entries;

@@ -1,7 +1,6 @@
 #ifndef fosls_contact_discretization_rt_signs_h
 #define fosls_contact_discretization_rt_signs_h
 
-#include <deal.II/base/geometry_info.h>
 #include <deal.II/fe/fe_values.h>
 
 #include <vector>

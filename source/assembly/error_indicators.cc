@@ -1,11 +1,14 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/work_stream.h>
 #include <deal.II/fe/fe_values.h>
 
 #include <fosls_contact/assembly/error_indicators.h>
 #include <fosls_contact/assembly/fosls_assembler.h>
 
 #include <algorithm>
+#include <exception>
 #include <functional>
+#include <mutex>
 
 namespace FoslsContact
 {
@@ -17,100 +20,159 @@ namespace FoslsContact
   {}
 
 
+  /** The evaluators and work arrays of one thread. */
+  template <int dim>
+  struct ErrorIndicators<dim>::Scratch
+  {
+    Scratch(const Mapping<dim> &mapping, const FiniteElement<dim> &fe)
+      // the assembler's quadrature, so that the sum is the assembled J
+      : fe_values(mapping,
+                  fe,
+                  QGauss<dim>(3),
+                  update_values | update_gradients | update_quadrature_points | update_JxW_values)
+      , fe_face(mapping,
+                fe,
+                QGauss<dim - 1>(3),
+                update_values | update_normal_vectors | update_quadrature_points |
+                  update_JxW_values)
+      , eps(fe_values.n_quadrature_points)
+      , row(std::max(fe_values.n_quadrature_points, fe_face.n_quadrature_points))
+      , u(fe_face.n_quadrature_points)
+      , divergence(fe_values.n_quadrature_points)
+      , sigma(row.size())
+      , div_sigma(fe_values.n_quadrature_points)
+      , f(dim)
+    {}
+
+    Scratch(const Scratch &other)
+      : Scratch(other.fe_values.get_mapping(), other.fe_values.get_fe())
+    {}
+
+    FEValues<dim>                        fe_values;
+    FEFaceValues<dim>                    fe_face;
+    std::vector<SymmetricTensor<2, dim>> eps;
+    std::vector<Tensor<1, dim>>          row, u;
+    std::vector<double>                  divergence;
+    std::vector<Tensor<2, dim>>          sigma;
+    std::vector<Tensor<1, dim>>          div_sigma;
+    Vector<double>                       f;
+  };
+
+
+  template <int dim>
+  void
+  ErrorIndicators<dim>::cell_values(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                                    const LevelVector &                                   solution,
+                                    Scratch &                                             scratch)
+  {
+    const auto &                     scene    = discretization.get_scene();
+    const auto &                     material = scene.material();
+    const FEValuesExtractors::Vector displacement(0);
+    auto &                           fe_values = scratch.fe_values;
+    auto &                           fe_face   = scratch.fe_face;
+    auto &                           sigma     = scratch.sigma;
+    auto &                           row       = scratch.row;
+    const unsigned int nq = fe_values.n_quadrature_points, nf = fe_face.n_quadrature_points;
+    const unsigned int i  = cell->active_cell_index();
+    fe_values.reinit(cell);
+    fe_values[displacement].get_function_symmetric_gradients(solution, scratch.eps);
+    for (unsigned int m = 0; m < dim; ++m)
+      {
+        // one extractor per stress row (the Tensor<2> extractor's
+        // divergence is zero for these RT components on deal.II 9.4)
+        const FEValuesExtractors::Vector sigma_row(dim + m * dim);
+        fe_values[sigma_row].get_function_values(solution, row);
+        fe_values[sigma_row].get_function_divergences(solution, scratch.divergence);
+        for (unsigned int q = 0; q < nq; ++q)
+          {
+            sigma[q][m]             = row[q];
+            scratch.div_sigma[q][m] = scratch.divergence[q];
+          }
+      }
+    for (unsigned int q = 0; q < nq; ++q)
+      {
+        Tensor<1, dim> residual = scratch.div_sigma[q];
+        if (scene.has_body_force())
+          {
+            scene.body_force().vector_value(fe_values.quadrature_point(q), scratch.f);
+            for (unsigned int d = 0; d < dim; ++d)
+              residual[d] += scratch.f[d];
+          }
+        const Tensor<2, dim> r =
+          FoslsAssembler<dim>::compliance(sigma[q], material.mu, material.lambda) -
+          Tensor<2, dim>(scratch.eps[q]);
+        eq[i] += weights.c_eq * (residual * residual) * fe_values.JxW(q);
+        constitutive[i] += weights.c_const * scalar_product(r, r) * fe_values.JxW(q);
+      }
+    if (scene.has_contact())
+      for (const unsigned int face : cell->face_indices())
+        if (cell->at_boundary(face) && scene.is_contact(cell->face(face)->boundary_id()))
+          {
+            fe_face.reinit(cell, face);
+            fe_face[displacement].get_function_values(solution, scratch.u);
+            for (unsigned int m = 0; m < dim; ++m)
+              {
+                fe_face[FEValuesExtractors::Vector(dim + m * dim)].get_function_values(solution,
+                                                                                        row);
+                for (unsigned int q = 0; q < nf; ++q)
+                  sigma[q][m] = row[q];
+              }
+            for (unsigned int q = 0; q < nf; ++q)
+              {
+                const Point<dim>     p   = fe_face.quadrature_point(q);
+                const Tensor<1, dim> n_o = scene.obstacle_normal(p);
+                const double         s_n = (sigma[q] * fe_face.normal_vector(q)) * n_o;
+                complementarity[i] += weights.c_compl * (scratch.u[q] * n_o - scene.gap().value(p)) *
+                                      s_n * fe_face.JxW(q);
+              }
+          }
+  }
+
+
   template <int dim>
   void
   ErrorIndicators<dim>::compute(const LevelVector &x_rotated)
   {
-    const auto &scene    = discretization.get_scene();
-    const auto &material = scene.material();
-    LevelVector x        = x_rotated;
+    LevelVector x = x_rotated;
     discretization.rotate_to_cartesian(discretization.finest_level(), x);
     const LevelVector solution = discretization.to_active(x);
-
-    // the assembler's quadrature, so that the sum is the assembled J
-    const QGauss<dim>     quadrature(3);
-    const QGauss<dim - 1> face_quadrature(3);
-    FEValues<dim>         fe_values(discretization.get_mapping(),
-                            discretization.get_fe(),
-                            quadrature,
-                            update_values | update_gradients | update_quadrature_points |
-                              update_JxW_values);
-    FEFaceValues<dim>     fe_face(discretization.get_mapping(),
-                              discretization.get_fe(),
-                              face_quadrature,
-                              update_values | update_normal_vectors |
-                                update_quadrature_points | update_JxW_values);
-    const FEValuesExtractors::Vector     displacement(0);
-    const unsigned int                   nq = quadrature.size(), nf = face_quadrature.size();
-    std::vector<SymmetricTensor<2, dim>> eps(nq);
-    std::vector<Tensor<1, dim>>          row(std::max(nq, nf)), u(nf);
-    std::vector<double>                  divergence(nq);
-    std::vector<Tensor<2, dim>>          sigma(std::max(nq, nf));
-    std::vector<Tensor<1, dim>>          div_sigma(nq);
-    Vector<double>                       f(dim);
 
     const unsigned int n_cells = discretization.get_triangulation().n_active_cells();
     eq.reinit(n_cells);
     constitutive.reinit(n_cells);
     complementarity.reinit(n_cells);
-    for (const auto &cell : discretization.get_dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const unsigned int i = cell->active_cell_index();
-          fe_values.reinit(cell);
-          fe_values[displacement].get_function_symmetric_gradients(solution, eps);
-          for (unsigned int m = 0; m < dim; ++m)
-            {
-              // one extractor per stress row (the Tensor<2> extractor's
-              // divergence is zero for these RT components on deal.II 9.4)
-              const FEValuesExtractors::Vector sigma_row(dim + m * dim);
-              fe_values[sigma_row].get_function_values(solution, row);
-              fe_values[sigma_row].get_function_divergences(solution, divergence);
-              for (unsigned int q = 0; q < nq; ++q)
-                {
-                  sigma[q][m]     = row[q];
-                  div_sigma[q][m] = divergence[q];
-                }
-            }
-          for (unsigned int q = 0; q < nq; ++q)
-            {
-              Tensor<1, dim> residual = div_sigma[q];
-              if (scene.has_body_force())
-                {
-                  scene.body_force().vector_value(fe_values.quadrature_point(q), f);
-                  for (unsigned int d = 0; d < dim; ++d)
-                    residual[d] += f[d];
-                }
-              const Tensor<2, dim> r =
-                FoslsAssembler<dim>::compliance(sigma[q], material.mu, material.lambda) -
-                Tensor<2, dim>(eps[q]);
-              eq[i] += weights.c_eq * (residual * residual) * fe_values.JxW(q);
-              constitutive[i] += weights.c_const * scalar_product(r, r) * fe_values.JxW(q);
-            }
-          if (scene.has_contact())
-            for (const unsigned int face : cell->face_indices())
-              if (cell->at_boundary(face) && scene.is_contact(cell->face(face)->boundary_id()))
-                {
-                  fe_face.reinit(cell, face);
-                  fe_face[displacement].get_function_values(solution, u);
-                  for (unsigned int m = 0; m < dim; ++m)
-                    {
-                      fe_face[FEValuesExtractors::Vector(dim + m * dim)].get_function_values(
-                        solution, row);
-                      for (unsigned int q = 0; q < nf; ++q)
-                        sigma[q][m] = row[q];
-                    }
-                  for (unsigned int q = 0; q < nf; ++q)
-                    {
-                      const Point<dim>     p   = fe_face.quadrature_point(q);
-                      const Tensor<1, dim> n_o = scene.obstacle_normal(p);
-                      const double         s_n = (sigma[q] * fe_face.normal_vector(q)) * n_o;
-                      complementarity[i] += weights.c_compl * (u[q] * n_o - scene.gap().value(p)) *
-                                            s_n * fe_face.JxW(q);
-                    }
-                }
-        }
 
+    // Cell by cell in parallel (WorkStream): every cell writes its own
+    // entries, so the values do not depend on the threads, and their sums
+    // (summarize()) are taken in cell order. The data functions were
+    // evaluated at these points by the assembly already; an exception is
+    // still carried out of the workers (which would abort the program)
+    // and thrown after the loop.
+    std::mutex         error_mutex;
+    std::exception_ptr error;
+    const auto worker = [&](const auto &cell, Scratch &scratch, Empty &) {
+      if (!cell->is_locally_owned())
+        return;
+      try
+        {
+          cell_values(cell, solution, scratch);
+        }
+      catch (...)
+        {
+          std::lock_guard<std::mutex> lock(error_mutex);
+          if (!error)
+            error = std::current_exception();
+        }
+    };
+    const auto &dof_handler = discretization.get_dof_handler();
+    WorkStream::run(dof_handler.begin_active(),
+                    dof_handler.end(),
+                    worker,
+                    [](const Empty &) {},
+                    Scratch(discretization.get_mapping(), discretization.get_fe()),
+                    Empty());
+    if (error)
+      std::rethrow_exception(error);
     summarize();
   }
 

@@ -1,13 +1,15 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/work_stream.h>
-
-#include <exception>
-#include <mutex>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 
 #include <fosls_contact/assembly/fosls_assembler.h>
 #include <fosls_contact/discretization/hanging_nodes.h>
+
+#include <algorithm>
+#include <exception>
+#include <mutex>
 
 namespace FoslsContact
 {
@@ -292,11 +294,73 @@ namespace FoslsContact
 
   template <int dim>
   void
+  FoslsAssembler<dim>::part_patterns(const LevelData<dim> &data,
+                                     SparsityPattern &     eq,
+                                     SparsityPattern &     contact) const
+  {
+    const auto &       scene   = discretization.get_scene();
+    const unsigned int n_local = data.n_local();
+    const unsigned int n_owned = data.n_owned();
+    const unsigned int n       = discretization.get_fe().n_dofs_per_cell();
+    DynamicSparsityPattern dsp_eq(n_local, n_local), dsp_contact(n_local, n_local);
+    std::vector<types::global_dof_index> dofs, block;
+    // the owned rows of @p block (with the masters of its hanging DoFs)
+    // couple with all of it
+    const auto add_block = [&](DynamicSparsityPattern &dsp) {
+      const std::size_t n_block = block.size();
+      for (std::size_t k = 0; k < n_block; ++k)
+        {
+          const auto h = data.hanging.find(block[k]);
+          if (h != data.hanging.end())
+            for (const auto &master : h->second)
+              block.push_back(master.first);
+        }
+      std::sort(block.begin(), block.end());
+      block.erase(std::unique(block.begin(), block.end()), block.end());
+      for (const auto i : block)
+        if (i < n_owned)
+          dsp.add_entries(i, block.begin(), block.end(), true);
+    };
+    data.for_each_cell(discretization.get_dof_handler(), [&](const auto &cell) {
+      data.get_local_dofs(cell, dofs);
+      bool rotated = false;
+      for (const auto dof : dofs)
+        rotated |= data.rotation_of_dof[dof] != numbers::invalid_unsigned_int;
+      for (int m = rotated ? -1 : 0; m < (rotated ? 0 : static_cast<int>(dim)); ++m)
+        {
+          block.clear();
+          for (unsigned int i = 0; i < n; ++i)
+            if (stress_row[i] >= 0 && (m < 0 || stress_row[i] == m))
+              block.push_back(dofs[i]);
+          add_block(dsp_eq);
+        }
+      if (scene.has_contact())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f) && scene.is_contact(cell->face(f)->boundary_id()))
+            {
+              block = dofs;
+              add_block(dsp_contact);
+              break;
+            }
+    });
+    eq.copy_from(dsp_eq);
+    contact.copy_from(dsp_contact);
+  }
+
+
+  template <int dim>
+  void
   FoslsAssembler<dim>::assemble(const unsigned int level, ConstrainedQP &qp) const
   {
     const auto &       fe   = discretization.get_fe();
     const auto &       data = discretization.level(level);
     const unsigned int n    = fe.n_dofs_per_cell();
+    // (the parts' matrices are on these until compress_matrices() puts
+    // them on their own patterns, below)
+    SparsityPattern eq_pattern, contact_pattern;
+    part_patterns(data, eq_pattern, contact_pattern);
+    qp.matrix_eq.reinit(eq_pattern);
+    qp.matrix_compl.reinit(contact_pattern);
 
     // The cell terms, in parallel (WorkStream); the copier adds them to
     // the global matrices one cell after the other in cell order, so the
@@ -370,7 +434,8 @@ namespace FoslsContact
       for (unsigned int i = 0; i < n; ++i)
         if (dofs[i] < n_owned)
           {
-            qp.matrix_eq.add(dofs[i], n, dofs.data(), &copy.k_eq(i, 0), false);
+            // (k_eq is an exact zero outside its pattern: part_patterns())
+            qp.matrix_eq.add(dofs[i], n, dofs.data(), &copy.k_eq(i, 0), true);
             qp.matrix.add(dofs[i], n, dofs.data(), &copy.k_total(i, 0), false);
             qp.rhs.local_element(dofs[i]) += copy.r_total(i);
             qp.rhs_eq.local_element(dofs[i]) += 2. * copy.r_eq(i);
@@ -400,7 +465,11 @@ namespace FoslsContact
       WorkStream::run(
         dof_handler.begin_mg(level), dof_handler.end_mg(level), worker, copier, scratch, AssemblyCopy(n));
     if (error)
-      std::rethrow_exception(error);
+      {
+        qp.matrix_eq.clear();
+        qp.matrix_compl.clear();
+        std::rethrow_exception(error);
+      }
     // an eliminated DoF keeps a unit diagonal (it is fixed at zero), so
     // that the matrix stays regular for the direct solvers
     for (const auto &hanging : data.hanging)

@@ -1,4 +1,5 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/work_stream.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/data_out.h>
@@ -262,36 +263,58 @@ namespace FoslsContact
   FieldMaxima
   Postprocessor<dim>::field_maxima(const LevelVector &solution) const
   {
-    const QTrapezoid<dim>            corners;
-    FEValues<dim>                    fe_values(mapping,
-                            discretization.get_fe(),
-                            corners,
-                            update_values);
+    // (at the cells' corners, cell by cell in parallel: a maximum does not
+    // depend on the order of the cells)
+    struct Scratch
+    {
+      Scratch(const Mapping<dim> &mapping, const FiniteElement<dim> &fe)
+        : fe_values(mapping, fe, QTrapezoid<dim>(), update_values)
+        , u(fe_values.n_quadrature_points)
+        , row(fe_values.n_quadrature_points)
+        , sigma(fe_values.n_quadrature_points)
+      {}
+      Scratch(const Scratch &other)
+        : Scratch(other.fe_values.get_mapping(), other.fe_values.get_fe())
+      {}
+      FEValues<dim>               fe_values;
+      std::vector<Tensor<1, dim>> u, row;
+      std::vector<Tensor<2, dim>> sigma;
+    };
     const FEValuesExtractors::Vector displacement(0);
-    const unsigned int               n = corners.size();
-    std::vector<Tensor<1, dim>>      u(n), row(n);
-    std::vector<Tensor<2, dim>>      sigma(n);
+    const double                     nu = parameters.material.poisson_ratio;
     FieldMaxima                      maxima;
-    for (const auto &cell : discretization.get_dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
+    const auto worker = [&](const auto &cell, Scratch &scratch, FieldMaxima &cell_maxima) {
+      cell_maxima = FieldMaxima();
+      if (!cell->is_locally_owned())
+        return;
+      auto &fe_values = scratch.fe_values;
+      fe_values.reinit(cell);
+      fe_values[displacement].get_function_values(solution, scratch.u);
+      for (unsigned int m = 0; m < dim; ++m)
         {
-          fe_values.reinit(cell);
-          fe_values[displacement].get_function_values(solution, u);
-          for (unsigned int m = 0; m < dim; ++m)
-            {
-              fe_values[FEValuesExtractors::Vector(dim + m * dim)].get_function_values(solution,
-                                                                                     row);
-              for (unsigned int q = 0; q < n; ++q)
-                sigma[q][m] = row[q];
-            }
-          for (unsigned int q = 0; q < n; ++q)
-            {
-              maxima.displacement = std::max(maxima.displacement, u[q].norm());
-              maxima.von_mises =
-                std::max(maxima.von_mises,
-                         StressMeasures::von_mises(sigma[q], parameters.material.poisson_ratio));
-            }
+          fe_values[FEValuesExtractors::Vector(dim + m * dim)].get_function_values(solution,
+                                                                                 scratch.row);
+          for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+            scratch.sigma[q][m] = scratch.row[q];
         }
+      for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+        {
+          cell_maxima.displacement = std::max(cell_maxima.displacement, scratch.u[q].norm());
+          cell_maxima.von_mises =
+            std::max(cell_maxima.von_mises, StressMeasures::von_mises(scratch.sigma[q], nu));
+        }
+    };
+    const auto copier = [&](const FieldMaxima &cell_maxima) {
+      maxima.displacement = std::max(maxima.displacement, cell_maxima.displacement);
+      maxima.von_mises    = std::max(maxima.von_mises, cell_maxima.von_mises);
+    };
+    const auto &dof_handler = discretization.get_dof_handler();
+    WorkStream::run(dof_handler.begin_active(),
+                    dof_handler.end(),
+                    worker,
+                    copier,
+                    Scratch(mapping, discretization.get_fe()),
+                    FieldMaxima());
     const MPI_Comm comm = discretization.get_communicator();
     maxima.displacement = Utilities::MPI::max(maxima.displacement, comm);
     maxima.von_mises    = Utilities::MPI::max(maxima.von_mises, comm);

@@ -13,8 +13,10 @@ namespace FoslsContact
   ConstrainedQP::reinit(const AlgebraicLevel &level)
   {
     matrix.reinit(level.sparsity);
-    matrix_eq.reinit(level.sparsity);
-    matrix_compl.reinit(level.sparsity);
+    // (matrix_eq and matrix_compl: sized by the assembler on the
+    // couplings of their terms)
+    matrix_eq.clear();
+    matrix_compl.clear();
     partitioner = level.partitioner;
     ghost_rows  = &level.ghost_rows;
     rhs.reinit(partitioner);

@@ -30,9 +30,6 @@ namespace FoslsContact
     // symmetric unless one of them is within round-off of the threshold
     // (measured on A: all entries are below 1e-15 or above 1e-8 of
     // sqrt(a_ii a_jj); the patch colors do not rely on symmetry).
-    Assert(part == nullptr ||
-             &part->get_sparsity_pattern() == &matrix.get_sparsity_pattern(),
-           ExcInternalError());
     // sqrt(|diagonal of A - p|) and sqrt(|diagonal of p|), local entries
     // (with the ghost entries: see LocalElements)
     const unsigned int  n_local = partitioner->locally_owned_size() + partitioner->n_ghost_indices();
@@ -59,14 +56,22 @@ namespace FoslsContact
       [&](const unsigned int begin, const unsigned int end) {
         for (auto i = begin; i < end; ++i)
           {
-            // (p walks the same pattern; without a part it walks A itself)
-            const SparseMatrix<double> &walked = part != nullptr ? *part : matrix;
-            auto                        p      = walked.begin(i);
-            for (auto e = matrix.begin(i); e != matrix.end(i); ++e, ++p)
+            // (p walks the part's row alongside: both rows store the
+            // diagonal first, then their columns in increasing order, and
+            // the part's columns are a subset of A's)
+            auto p = part != nullptr ? part->begin(i) : matrix.begin(i);
+            const auto p_end = part != nullptr ? part->end(i) : matrix.end(i);
+            for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
               {
                 double scale = rest_root[i] * rest_root[e->column()];
-                if (part != nullptr && p->value() != 0.)
-                  scale += part_root[i] * part_root[e->column()];
+                if (part != nullptr)
+                  {
+                    if (e->column() != i)
+                      while (p != p_end && (p->column() == i || p->column() < e->column()))
+                        ++p;
+                    if (p != p_end && p->column() == e->column() && p->value() != 0.)
+                      scale += part_root[i] * part_root[e->column()];
+                  }
                 if (std::abs(e->value()) <= drop * scale)
                   e->value() = 0.;
               }

@@ -59,6 +59,16 @@ namespace FoslsContact
     unsigned int cells_for_half() const { return half_cells; }
 
   private:
+    struct Scratch;
+    /** No data goes from a cell to a copier: a cell writes its own entries. */
+    struct Empty
+    {};
+
+    /** The parts of eta_T^2 of one owned @p cell, for the Cartesian @p solution. */
+    void cell_values(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                     const LevelVector &                                   solution,
+                     Scratch &                                             scratch);
+
     /** total(), max_squared() and cells_for_half() from the parts. */
     void summarize();
 

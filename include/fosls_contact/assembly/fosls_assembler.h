@@ -68,6 +68,21 @@ namespace FoslsContact
     /** The cell's terms in the normal-tangential basis: R^T K R, R^T r. */
     void rotate(const LevelData<dim> &data, AssemblyCopy &copy) const;
 
+    /**
+     * The patterns on which the parts of J are summed (owned rows): the
+     * equilibrium part couples two fluxes of one stress row in one cell
+     * (all the fluxes of a cell with a rotated face, whose rotation mixes
+     * its rows), the complementarity part the DoFs of a cell on Gamma_C;
+     * both with the masters of their hanging DoFs. Summed on the DoF
+     * coupling pattern instead, the two parts took two more matrices of
+     * A's size until compress_matrices() (at the cube's level 7, 2 x 2.5 GB
+     * of values that the process kept), and the copier added every cell's
+     * zeros to them.
+     */
+    void part_patterns(const LevelData<dim> &data,
+                       SparsityPattern &     eq,
+                       SparsityPattern &     contact) const;
+
     const Discretization<dim> &discretization;
     const Parameters::Material material;
     const Parameters::Weights  weights;

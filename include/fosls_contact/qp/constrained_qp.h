@@ -106,9 +106,10 @@ namespace FoslsContact
     LevelVector          upper_bounds;
 
     /**
-     * Size the matrices on the level's coupling pattern and copy its
-     * roles, fixed values and bounds (a LevelData of the discretization is
-     * an AlgebraicLevel).
+     * Size A on the level's coupling pattern and copy its roles, fixed
+     * values and bounds (a LevelData of the discretization is an
+     * AlgebraicLevel). The assembler sizes matrix_eq and matrix_compl on
+     * the couplings of their terms (FoslsAssembler::assemble()).
      */
     void reinit(const AlgebraicLevel &level);
 

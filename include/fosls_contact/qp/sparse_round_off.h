@@ -28,9 +28,9 @@ namespace FoslsContact
    * cancel in the assembly of A, or in a Galerkin product of it. The
    * diagonal of the ghost columns comes from their owners.
    *
-   * @p part, if given, is a part of @p matrix assembled on its own, on the
-   * same pattern (the equilibrium term), whose entries are exact zeros
-   * where it does not couple two DoFs. The round-off of a_ij is then
+   * @p part, if given, is a part of @p matrix assembled on its own (the
+   * equilibrium term), on a pattern within that of @p matrix, whose
+   * entries are exact zeros where it does not couple two DoFs. The round-off of a_ij is then
    * bounded by the parts that have the entry: the threshold is
    * drop (sqrt(|p_ii p_jj|) [p_ij != 0] + sqrt(|r_ii r_jj|)), r = A - p,
    * which is at most drop sqrt(|a_ii a_jj|). This matters where the parts

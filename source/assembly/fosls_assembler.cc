@@ -307,16 +307,7 @@ namespace FoslsContact
     // the owned rows of @p block (with the masters of its hanging DoFs)
     // couple with all of it
     const auto add_block = [&](DynamicSparsityPattern &dsp) {
-      const std::size_t n_block = block.size();
-      for (std::size_t k = 0; k < n_block; ++k)
-        {
-          const auto h = data.hanging.find(block[k]);
-          if (h != data.hanging.end())
-            for (const auto &master : h->second)
-              block.push_back(master.first);
-        }
-      std::sort(block.begin(), block.end());
-      block.erase(std::unique(block.begin(), block.end()), block.end());
+      sort_with_masters(data, block);
       for (const auto i : block)
         if (i < n_owned)
           dsp.add_entries(i, block.begin(), block.end(), true);

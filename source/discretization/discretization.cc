@@ -244,23 +244,13 @@ namespace FoslsContact
       // a cell couples its DoFs, and, with hanging nodes eliminated, the
       // masters of its constrained DoFs (C^T A C), which may lie on the
       // coarse neighbour
-      std::vector<types::global_dof_index> dofs, columns;
+      std::vector<types::global_dof_index> columns;
       DynamicSparsityPattern               dsp(n_local, n_local);
       data.for_each_cell(dof_handler, [&](const auto &cell) {
-        data.get_local_dofs(cell, dofs);
-        const std::size_t n_cell = dofs.size();
-        for (std::size_t k = 0; k < n_cell; ++k)
-          {
-            const auto h = data.hanging.find(dofs[k]);
-            if (h != data.hanging.end())
-              for (const auto &master : h->second)
-                dofs.push_back(master.first);
-          }
         // a row takes the cell's columns at once, sorted (one merge
         // instead of a search per entry)
-        columns = dofs;
-        std::sort(columns.begin(), columns.end());
-        columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+        data.get_local_dofs(cell, columns);
+        sort_with_masters(data, columns);
         for (const auto i : columns)
           if (held[i])
             dsp.add_entries(i, columns.begin(), columns.end(), true);

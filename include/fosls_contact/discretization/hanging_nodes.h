@@ -8,6 +8,7 @@
 
 #include <fosls_contact/discretization/level_data.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace FoslsContact
@@ -28,6 +29,29 @@ namespace FoslsContact
   eliminate_hanging_dofs(const DoFHandler<dim> &    dof_handler,
                          AffineConstraints<double> &constraints,
                          LevelData<dim> &           data);
+
+  /**
+   * The DoFs that the terms of a cell couple, with hanging nodes
+   * eliminated (C^T K C): @p dofs (local indices of a level) and the
+   * masters of those of them that are constrained (LevelData::hanging),
+   * which may lie on the coarse neighbour; sorted, each once, so that a
+   * sparsity pattern takes them as one row at once.
+   */
+  template <int dim>
+  void
+  sort_with_masters(const LevelData<dim> &data, std::vector<types::global_dof_index> &dofs)
+  {
+    const std::size_t n = dofs.size();
+    for (std::size_t k = 0; k < n; ++k)
+      {
+        const auto h = data.hanging.find(dofs[k]);
+        if (h != data.hanging.end())
+          for (const auto &master : h->second)
+            dofs.push_back(master.first);
+      }
+    std::sort(dofs.begin(), dofs.end());
+    dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+  }
 
   /**
    * The terms of one cell of a level with hanging nodes (@p data), its

@@ -1,5 +1,3 @@
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <fosls_contact/discretization/level_meshes.h>
@@ -75,10 +73,7 @@ namespace FoslsContact
     const auto &fine                  = level(l);
     const auto &fe                    = fine_discretization.get_fe();
     const unsigned int n              = fe.n_dofs_per_cell();
-    FEFaceValues<dim>  fe_face(fine_discretization.get_mapping(),
-                              fe,
-                              QGauss<dim - 1>(1),
-                              update_values | update_normal_vectors);
+    RtFaceFlips<dim>   face_flips(fine_discretization.get_mapping());
 
     // Row by row: a fine DoF's row is the coarse function's value there,
     // the same from every cell at it, so the first cell that has the DoF
@@ -97,8 +92,8 @@ namespace FoslsContact
         coarse.get_local_dofs(coarse_cell, coarse_dofs);
         if (refined_here)
           {
-            const auto parent_signs = rt_signs(fe_face, coarse_cell);
-            const auto child_signs  = rt_signs(fe_face, cell);
+            const auto parent_signs = rt_signs(fe, face_flips(coarse_cell));
+            const auto child_signs  = rt_signs(fe, face_flips(cell));
             embedding = fe.get_prolongation_matrix(cell->parent()->child_iterator_to_index(cell),
                                                    cell->parent()->refinement_case());
             for (unsigned int i = 0; i < n; ++i)

@@ -1,5 +1,3 @@
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <fosls_contact/discretization/level_transfer.h>
@@ -13,11 +11,7 @@ namespace FoslsContact
   template <int dim>
   LevelTransfer<dim>::LevelTransfer(const Discretization<dim> &discretization)
   {
-    const QMidpoint<dim - 1> midpoint;
-    FEFaceValues<dim>        fe_face(discretization.get_mapping(),
-                              discretization.get_fe(),
-                              midpoint,
-                              update_values | update_normal_vectors);
+    RtFaceFlips<dim>   face_flips(discretization.get_mapping());
     const auto &       dof_handler = discretization.get_dof_handler();
     const auto &       fe          = discretization.get_fe();
     const unsigned int n           = fe.n_dofs_per_cell();
@@ -62,7 +56,7 @@ namespace FoslsContact
                 rt_signs(fe,
                          l > 1 && parent_flips[cell->index()] != unread ?
                            parent_flips[cell->index()] :
-                           rt_face_flips(fe_face, cell));
+                           face_flips(cell));
               for (unsigned int c = 0; c < cell->n_children(); ++c)
                 {
                   if (!Discretization<dim>::is_present(cell->child(c)))
@@ -72,7 +66,7 @@ namespace FoslsContact
                   cell->child(c)->get_mg_dof_indices(child_dofs);
                   for (auto &dof : child_dofs)
                     dof = fine.global_to_local(dof);
-                  const unsigned int flips = rt_face_flips(fe_face, cell->child(c));
+                  const unsigned int flips = face_flips(cell->child(c));
                   child_flips[cell->child(c)->index()] = flips;
                   const auto child_signs = rt_signs(fe, flips);
                   for (unsigned int i = 0; i < n; ++i)

@@ -1,5 +1,3 @@
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/fe/fe_values.h>
 
 #include <fosls_contact/discretization/refinement_transfer.h>
 #include <fosls_contact/discretization/rt_signs.h>
@@ -32,8 +30,7 @@ namespace FoslsContact
     const auto &       fe = dof_handler.get_fe();
     const unsigned int n  = fe.n_dofs_per_cell();
     x.reinit(partitioner);
-    // (the face center: where rt_signs() reads a shape function's sign)
-    FEFaceValues<dim> fe_face(mapping, fe, QGauss<dim - 1>(1), update_values | update_normal_vectors);
+    RtFaceFlips<dim>  face_flips(mapping);
     Vector<double>    parent_local(n), local(n);
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -51,8 +48,8 @@ namespace FoslsContact
         const auto from   = cell_values.find(parent->id());
         AssertThrow(from != cell_values.end(),
                     ExcMessage("RefinementTransfer: a cell refined more than once"));
-        const auto parent_signs = rt_signs(fe_face, parent);
-        const auto child_signs  = rt_signs(fe_face, cell);
+        const auto parent_signs = rt_signs(fe, face_flips(parent));
+        const auto child_signs  = rt_signs(fe, face_flips(cell));
         for (unsigned int j = 0; j < n; ++j)
           parent_local[j] = parent_signs[j] * from->second[j];
         fe.get_prolongation_matrix(parent->child_iterator_to_index(cell), parent->refinement_case())

@@ -16,7 +16,12 @@
 //    whether they agree and whether MGTransferPrebuilt's result equals x
 //    point by point (deal.II 9.4's MGTransferPrebuilt ignores the RT sign
 //    flips: it does not);
-//  - P maps a constant displacement component to the same constant.
+//  - P maps a constant displacement component to the same constant;
+//  - the RT face flips that LevelTransfer applies (RtFaceFlips, one reinit
+//    of a lone RT0 per cell) are those the FESystem's shape functions
+//    show on every face of every cell of every level: their normal
+//    component at the face center, read with FEFaceValues, points against
+//    the reference direction exactly on the flipped faces.
 // LevelTransfer::prolongate works on LevelVectors; the reference
 // (MGTransferPrebuilt<Vector<double>>) on serial vectors: the test runs on
 // one MPI process, which owns every DoF, and copies between the two (local
@@ -28,6 +33,7 @@
 
 #include <fosls_contact/discretization/discretization.h>
 #include <fosls_contact/discretization/level_transfer.h>
+#include <fosls_contact/discretization/rt_signs.h>
 
 #include "tests.h"
 
@@ -62,6 +68,64 @@ values_on(const FEValues<dim> &fe_values, const Iterator &cell, const Vector<dou
 }
 
 
+/**
+ * Whether face @p f of @p cell carries flipped RT shape functions, read
+ * from the FESystem itself: the normal component of each stress row's
+ * face function at the face center, outward on faces 1, 3, 5 and inward
+ * on faces 0, 2, 4 without a flip. All rows must agree.
+ */
+template <int dim, typename Iterator>
+bool
+flipped_by_face_values(FEFaceValues<dim> &fe_face, const Iterator &cell, const unsigned int f)
+{
+  const auto &fe = fe_face.get_fe();
+  fe_face.reinit(cell, f);
+  unsigned int n_flipped = 0, n_rows = 0;
+  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+    {
+      const auto base = fe.system_to_base_index(i);
+      if (base.first.first != 1 || base.second != f)
+        continue;
+      const FEValuesExtractors::Vector row(dim + base.first.second * dim);
+      const double normal    = fe_face[row].value(i, 0) * fe_face.normal_vector(0);
+      const double reference = (f % 2 == 1) ? 1. : -1.;
+      n_flipped += (normal * reference <= 0);
+      ++n_rows;
+    }
+  AssertThrow(n_rows == dim && (n_flipped == 0 || n_flipped == dim),
+              ExcMessage("the stress rows disagree on a face's sign"));
+  return n_flipped > 0;
+}
+
+
+/** RtFaceFlips against flipped_by_face_values() on every cell of every level. */
+template <int dim>
+void
+check_face_flips(const Discretization<dim> &discretization)
+{
+  RtFaceFlips<dim>  face_flips(discretization.get_mapping());
+  FEFaceValues<dim> fe_face(discretization.get_mapping(),
+                            discretization.get_fe(),
+                            QMidpoint<dim - 1>(),
+                            update_values | update_normal_vectors);
+  unsigned int n_faces = 0, n_flipped = 0, n_disagree = 0;
+  for (const auto &cell : discretization.get_dof_handler().cell_iterators())
+    {
+      const unsigned int flips = face_flips(cell);
+      for (const unsigned int f : cell->face_indices())
+        {
+          const bool expected = flipped_by_face_values(fe_face, cell, f);
+          n_disagree += (expected != bool(flips & (1u << f)));
+          n_flipped += expected;
+          ++n_faces;
+        }
+    }
+  std::cout << "RT face flips: " << n_flipped << " of " << n_faces
+            << " cell faces flipped" << std::endl;
+  check(n_disagree == 0, "RtFaceFlips reads the flips the FESystem's shape functions show");
+}
+
+
 template <int dim>
 void
 test(const std::string &                                     title,
@@ -80,6 +144,7 @@ test(const std::string &                                     title,
   const LevelTransfer<dim>  transfer(discretization);
   const auto &              fe      = discretization.get_fe();
   const auto &              mapping = discretization.get_mapping();
+  check_face_flips(discretization);
 
   MGTransferPrebuilt<Vector<double>> reference;
   reference.build(discretization.get_dof_handler());
@@ -122,13 +187,9 @@ test(const std::string &                                     title,
             {
               // (in 3D a cell can touch a curved boundary with an edge
               // only: the rim of a flat face)
-              // (in 3D a cell can touch a curved boundary with an edge
-              // only: the rim of a flat face)
               bool nested = true;
               for (const unsigned int f : parent->face_indices())
                 nested &= parent->face(f)->manifold_id() == numbers::flat_manifold_id;
-              for (unsigned int k = 0; dim == 3 && k < GeometryInfo<dim>::lines_per_cell; ++k)
-                nested &= parent->line(k)->manifold_id() == numbers::flat_manifold_id;
               for (unsigned int k = 0; dim == 3 && k < GeometryInfo<dim>::lines_per_cell; ++k)
                 nested &= parent->line(k)->manifold_id() == numbers::flat_manifold_id;
               if (!nested)

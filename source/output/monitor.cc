@@ -65,7 +65,7 @@ namespace FoslsContact
     const double rho    = std::max(r.rate, history[history.size() - 2].rate);
     const double factor = rho < 1. ? std::max(1., rho / (1. - rho)) :
                                      std::numeric_limits<double>::infinity();
-    bool stop = at_round_off_floor(x, rho, factor);
+    bool stop = at_round_off_floor(rho, factor);
     if (parameters.stopping == Parameters::Solver::Stopping::tolerance)
       stop |= r.correction * factor <= parameters.tolerance * norm_x;
     else
@@ -134,8 +134,10 @@ namespace FoslsContact
     d -= x_old;
     IterationRecord r;
     r.iteration    = history.size();
-    r.functional   = qp.parts(x);
-    r.correction   = qp.energy_norm(d);
+    const IterateMeasures measures = qp.measure(x, d);
+    r.functional   = measures.functional;
+    r.correction   = measures.correction;
+    r.round_off    = measures.round_off;
     std::vector<bool> active = qp.active_set(x);
     r.active       = qp.n_active(active);
     r.violation    = qp.max_violation(x);
@@ -164,11 +166,10 @@ namespace FoslsContact
 
 
   bool
-  Monitor::at_round_off_floor(const LevelVector &x, const double rho, const double factor)
+  Monitor::at_round_off_floor(const double rho, const double factor)
   {
-    const double floor    = qp.round_off_correction(x);
-    history.back().round_off = floor;
-    at_floor = rules.at_round_off_floor(history, floor, rho, factor, floor_stagnated);
+    at_floor = rules.at_round_off_floor(
+      history, history.back().round_off, rho, factor, floor_stagnated);
     return at_floor;
   }
 

@@ -14,22 +14,23 @@ namespace FoslsContact
     const LocalElements x_local(x); // (the ghost entries too: see LocalElements)
     const auto          partial = sum_over_row_blocks<CompensatedSum>(
       x.locally_owned_size(), [&](CompensatedSum &sum, const unsigned int i) {
-        // (M x)_i in twice the precision, times x_i / 2
-        const double   xi = x.local_element(i);
+        // (M x)_i in twice the precision
         CompensatedSum row;
         for (auto e = M.begin(i); e != M.end(i); ++e)
           row.add_product(e->value(), x_local(e->column()));
-        sum.add_product(0.5 * xi, row.sum);
-        sum.add(0.5 * xi * row.error);
-        sum.add_product(-b.local_element(i), xi);
+        add_quadratic_row(sum, x.local_element(i), row, b.local_element(i));
       });
     CompensatedSum local;
     for (const auto &p : partial)
       local.add(p);
-    // the processes' sums, added in the order of the ranks (the same on
-    // every process)
-    const auto all = gather_all(x.get_mpi_communicator(),
-                                std::array<double, 2>{{local.sum, local.error}});
+    return accurate_total(local, x.get_mpi_communicator(), c);
+  }
+
+
+  double
+  accurate_total(const CompensatedSum &local, const MPI_Comm comm, const double c)
+  {
+    const auto all = gather_all(comm, std::array<double, 2>{{local.sum, local.error}});
     CompensatedSum total;
     for (const auto &[sum, error] : all)
       {

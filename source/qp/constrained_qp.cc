@@ -207,9 +207,72 @@ namespace FoslsContact
     double sum = 0;
     for (const double p : partial)
       sum += p;
-    sum = Utilities::MPI::sum(sum, get_communicator());
+    return round_off_from(sum, x.size());
+  }
+
+
+  double
+  ConstrainedQP::round_off_from(const double local_sum, const types::global_dof_index n) const
+  {
+    const double sum = Utilities::MPI::sum(local_sum, get_communicator());
     return std::numeric_limits<double>::epsilon() * std::sqrt(sum) *
-           std::pow(double(x.size()), 1. / dimension) * refinement_ratio;
+           std::pow(double(n), 1. / dimension) * refinement_ratio;
+  }
+
+
+  IterateMeasures
+  ConstrainedQP::measure(const LevelVector &x, const LevelVector &d) const
+  {
+    update_ghosts(x);
+    update_ghosts(d);
+    const LocalElements x_local(x), d_local(d);
+    const unsigned int  n = n_owned();
+    // Each row's terms as value(), energy_norm() (matrix_norm_square())
+    // and round_off_correction() compute them. Their sums, too: value()'s
+    // and round_off_correction()'s by the same blocks of rows, in order;
+    // energy_norm()'s row by row, so its terms are kept.
+    struct Partial
+    {
+      CompensatedSum value;
+      double         round_off = 0;
+    };
+    std::vector<double> d_terms(n);
+    const auto          partial =
+      sum_over_row_blocks<Partial>(n, [&](Partial &p, const unsigned int i) {
+        CompensatedSum Ax;
+        double         Ad = 0, s = std::abs(rhs.local_element(i));
+        for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
+          {
+            const double a = e->value(), x_j = x_local(e->column());
+            Ax.add_product(a, x_j);
+            Ad += a * d_local(e->column());
+            s += std::abs(a * x_j);
+          }
+        add_quadratic_row(p.value, x.local_element(i), Ax, rhs.local_element(i));
+        d_terms[i] = d.local_element(i) * Ad;
+        if (role[i] != DoFRole::fixed && matrix.diag_element(i) > 0)
+          p.round_off += s * s / matrix.diag_element(i);
+      });
+    CompensatedSum value;
+    double         round_off = 0, d_norm_square = 0;
+    for (const auto &p : partial)
+      {
+        value.add(p.value);
+        round_off += p.round_off;
+      }
+    for (const double t : d_terms)
+      d_norm_square += t;
+
+    IterateMeasures m;
+    m.functional.total = accurate_total(value, get_communicator(), constant);
+    m.functional.eq    = accurate_quadratic(matrix_eq, x, rhs_eq, constant_eq);
+    m.functional.complementarity = accurate_quadratic(matrix_compl, x, rhs_compl, 0.);
+    m.functional.constitutive =
+      m.functional.total - m.functional.eq - m.functional.complementarity;
+    m.correction =
+      std::sqrt(std::max(0., Utilities::MPI::sum(d_norm_square, get_communicator())));
+    m.round_off = round_off_from(round_off, x.size());
+    return m;
   }
   std::size_t
   ConstrainedQP::memory_consumption() const

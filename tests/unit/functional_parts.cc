@@ -9,6 +9,9 @@
 // C_eq ||div sigma + f||^2 and C_compl <u.n - g, (sigma n).n>, summed cell
 // by cell (ErrorIndicators) with the same quadrature, to round-off; so must
 // the constitutive part (J minus the two), which A alone carries.
+// ConstrainedQP::measure(x, d), which the solvers' monitor calls after
+// every iteration, must return exactly (bit for bit) what parts(x),
+// energy_norm(d) and round_off_correction(x) return, for a random d.
 //
 // Cases: the half disc of prm/hertz.prm (curved boundary: faces of mixed
 // orientation, rotated contact faces) uniform and refined once at the
@@ -94,6 +97,17 @@ check_parts(const std::string &name,
   check(agree(parts.eq, eq), "equilibrium part = its integral");
   check(agree(parts.constitutive, constitutive), "constitutive part = its integral");
   check(agree(parts.complementarity, complementarity), "complementarity part = its integral");
+
+  LevelVector d = qp.new_vector();
+  for (unsigned int i = 0; i < d.locally_owned_size(); ++i)
+    d.local_element(i) = uniform(random);
+  const IterateMeasures m = qp.measure(x, d);
+  check(m.functional.total == parts.total && m.functional.eq == parts.eq &&
+          m.functional.constitutive == parts.constitutive &&
+          m.functional.complementarity == parts.complementarity &&
+          m.correction == qp.energy_norm(d) && m.round_off == qp.round_off_correction(x) &&
+          m.correction > 0 && m.round_off > 0,
+        "measure(x, d) = parts(x), energy_norm(d), round_off_correction(x) exactly");
 }
 
 

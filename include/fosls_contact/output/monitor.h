@@ -142,17 +142,19 @@ namespace FoslsContact
   private:
     /**
      * The record of iteration @p x (after @p x_old), appended to the
-     * history; the active set's last change.
+     * history (with the round-off floor of the corrections at @p x:
+     * ConstrainedQP::measure() reads A once for all of them); the active
+     * set's last change.
      */
     const IterationRecord &record(const LevelVector &x, const LevelVector &x_old);
     /**
      * Whether the last correction is at the round-off floor of the
-     * corrections at @p x (ConstrainedQP::round_off_correction()), with the
-     * rate @p rho and the error factor @p factor = max(1, rho/(1 - rho)),
-     * or the corrections stagnate above it (StoppingRules). Sets the
-     * record's round-off.
+     * corrections at its iterate (the record's round_off:
+     * ConstrainedQP::round_off_correction()), with the rate @p rho and the
+     * error factor @p factor = max(1, rho/(1 - rho)), or the corrections
+     * stagnate above it (StoppingRules).
      */
-    bool at_round_off_floor(const LevelVector &x, const double rho, const double factor);
+    bool at_round_off_floor(const double rho, const double factor);
     const ConstrainedQP &         qp;
     const Parameters::Solver      parameters;
     const ConditionalOStream &    pcout;

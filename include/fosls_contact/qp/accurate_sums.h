@@ -102,6 +102,29 @@ namespace FoslsContact
                             const LevelVector &         x,
                             const LevelVector &         b,
                             const double                c);
+
+  /**
+   * Row i's terms of accurate_quadratic(), added to @p sum: x_i (M x)_i / 2
+   * (@p Mx_i, summed with its error) - b_i x_i.
+   */
+  inline void
+  add_quadratic_row(CompensatedSum &      sum,
+                    const double          x_i,
+                    const CompensatedSum &Mx_i,
+                    const double          b_i)
+  {
+    sum.add_product(0.5 * x_i, Mx_i.sum);
+    sum.add(0.5 * x_i * Mx_i.error);
+    sum.add_product(-b_i, x_i);
+  }
+
+  /**
+   * The end of accurate_quadratic(): this process's sum of the blocks,
+   * @p local, added to the other processes' in the order of the ranks (the
+   * same on every process), plus @p c. Collective.
+   */
+  double
+  accurate_total(const CompensatedSum &local, const MPI_Comm comm, const double c);
 } // namespace FoslsContact
 
 #endif

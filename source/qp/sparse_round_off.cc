@@ -85,52 +85,85 @@ namespace FoslsContact
   compress_to_nonzeros(SparseMatrix<double> &matrix, SparsityPattern &sparsity)
   {
     Assert(&matrix.get_sparsity_pattern() != &sparsity, ExcInternalError());
-    const auto n    = matrix.m();
+    const unsigned int n = matrix.m();
     // (the row is the loop's: an iterator's row() is a binary search over
     // all rows, which made this the slowest part of the set-up in 3D)
     const auto kept = [](const auto &entry, const types::global_dof_index row) {
       return entry.value() != 0. || entry.column() == row;
     };
+    // Every pass but SparsityPattern::compress() treats the rows apart
+    // (each row's entries are read and written by one thread), so they
+    // run in parallel; the memory is allocated on this thread.
+    constexpr unsigned int    grain = 1000;
     std::vector<unsigned int> row_lengths(n, 0);
-    for (types::global_dof_index i = 0; i < n; ++i)
-      for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
-        row_lengths[i] += kept(*e, i);
+    for_subranges(
+      0u,
+      n,
+      [&](const unsigned int begin, const unsigned int end) {
+        for (unsigned int i = begin; i < end; ++i)
+          for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
+            row_lengths[i] += kept(*e, i);
+      },
+      grain);
     sparsity.reinit(n, n, row_lengths);
     // a row's columns at once, sorted: SparsityPattern::add() searches
     // the row for every entry it adds
-    std::vector<SparsityPattern::size_type> columns;
-    for (types::global_dof_index i = 0; i < n; ++i)
-      {
-        columns.clear();
-        for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
-          if (e->value() != 0. && e->column() != i)
-            columns.push_back(e->column());
-        sparsity.add_entries(i, columns.begin(), columns.end(), true);
-      }
+    for_subranges(
+      0u,
+      n,
+      [&](const unsigned int begin, const unsigned int end) {
+        std::vector<SparsityPattern::size_type> columns;
+        for (unsigned int i = begin; i < end; ++i)
+          {
+            columns.clear();
+            for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
+              if (e->value() != 0. && e->column() != i)
+                columns.push_back(e->column());
+            sparsity.add_entries(i, columns.begin(), columns.end(), true);
+          }
+      },
+      grain);
     sparsity.compress();
 
     // Both patterns store a row as the diagonal and then the other
     // columns in increasing order, so a new row is a subsequence of the
-    // old one.
-    std::vector<double> values;
-    values.reserve(sparsity.n_nonzero_elements());
-    for (types::global_dof_index i = 0; i < n; ++i)
-      {
-        auto e = matrix.begin(i);
-        for (auto s = sparsity.begin(i); s != sparsity.end(i); ++s)
+    // old one. values holds the new rows one after the other.
+    std::vector<std::size_t> row_start(n + 1, 0);
+    for (unsigned int i = 0; i < n; ++i)
+      row_start[i + 1] = row_start[i] + sparsity.row_length(i);
+    std::vector<double> values(row_start[n]);
+    for_subranges(
+      0u,
+      n,
+      [&](const unsigned int begin, const unsigned int end) {
+        for (unsigned int i = begin; i < end; ++i)
           {
-            while (e->column() != s->column())
-              ++e;
-            values.push_back(e->value());
+            auto        e = matrix.begin(i);
+            std::size_t k = row_start[i];
+            for (auto s = sparsity.begin(i); s != sparsity.end(i); ++s)
+              {
+                while (e->column() != s->column())
+                  ++e;
+                values[k++] = e->value();
+              }
           }
-      }
+      },
+      grain);
     // clear() first: SparseMatrix::reinit keeps an allocation that is
     // large enough, which would be that of the full pattern
     matrix.clear();
     matrix.reinit(sparsity);
-    std::size_t k = 0;
-    for (types::global_dof_index i = 0; i < n; ++i)
-      for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
-        e->value() = values[k++];
+    for_subranges(
+      0u,
+      n,
+      [&](const unsigned int begin, const unsigned int end) {
+        for (unsigned int i = begin; i < end; ++i)
+          {
+            std::size_t k = row_start[i];
+            for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
+              e->value() = values[k++];
+          }
+      },
+      grain);
   }
 } // namespace FoslsContact

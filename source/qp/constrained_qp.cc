@@ -58,8 +58,15 @@ namespace FoslsContact
   FunctionalValue
   ConstrainedQP::parts(const LevelVector &x) const
   {
+    return parts_with_total(x, value(x));
+  }
+
+
+  FunctionalValue
+  ConstrainedQP::parts_with_total(const LevelVector &x, const double total) const
+  {
     FunctionalValue v;
-    v.total = value(x);
+    v.total = total;
     v.eq    = accurate_quadratic(matrix_eq, x, rhs_eq, constant_eq);
     v.complementarity = accurate_quadratic(matrix_compl, x, rhs_compl, 0.);
     v.constitutive    = v.total - v.eq - v.complementarity;
@@ -264,11 +271,7 @@ namespace FoslsContact
       d_norm_square += t;
 
     IterateMeasures m;
-    m.functional.total = accurate_total(value, get_communicator(), constant);
-    m.functional.eq    = accurate_quadratic(matrix_eq, x, rhs_eq, constant_eq);
-    m.functional.complementarity = accurate_quadratic(matrix_compl, x, rhs_compl, 0.);
-    m.functional.constitutive =
-      m.functional.total - m.functional.eq - m.functional.complementarity;
+    m.functional = parts_with_total(x, accurate_total(value, get_communicator(), constant));
     m.correction =
       std::sqrt(std::max(0., Utilities::MPI::sum(d_norm_square, get_communicator())));
     m.round_off = round_off_from(round_off, x.size());

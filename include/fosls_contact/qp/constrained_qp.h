@@ -192,6 +192,8 @@ namespace FoslsContact
 
 
   private:
+    /** parts() at @p x with J(x) = @p total known. */
+    FunctionalValue parts_with_total(const LevelVector &x, const double total) const;
     /**
      * round_off_correction() from this process's sum of s_i^2 / A_ii
      * (@p local_sum) and the number of DoFs @p n. Collective.

@@ -4,11 +4,10 @@
 
 #include <fosls_contact/assembly/error_indicators.h>
 #include <fosls_contact/assembly/fosls_assembler.h>
+#include <fosls_contact/assembly/worker_exceptions.h>
 
 #include <algorithm>
-#include <exception>
 #include <functional>
-#include <mutex>
 
 namespace FoslsContact
 {
@@ -146,23 +145,11 @@ namespace FoslsContact
     // entries, so the values do not depend on the threads, and their sums
     // (summarize()) are taken in cell order. The data functions were
     // evaluated at these points by the assembly already; an exception is
-    // still carried out of the workers (which would abort the program)
-    // and thrown after the loop.
-    std::mutex         error_mutex;
-    std::exception_ptr error;
-    const auto worker = [&](const auto &cell, Scratch &scratch, Empty &) {
-      if (!cell->is_locally_owned())
-        return;
-      try
-        {
-          cell_values(cell, solution, scratch);
-        }
-      catch (...)
-        {
-          std::lock_guard<std::mutex> lock(error_mutex);
-          if (!error)
-            error = std::current_exception();
-        }
+    // still carried out of the workers and thrown after the loop.
+    WorkerExceptions errors;
+    const auto       worker = [&](const auto &cell, Scratch &scratch, Empty &) {
+      if (cell->is_locally_owned())
+        errors.guard([&]() { cell_values(cell, solution, scratch); });
     };
     const auto &dof_handler = discretization.get_dof_handler();
     WorkStream::run(dof_handler.begin_active(),
@@ -171,8 +158,7 @@ namespace FoslsContact
                     [](const Empty &) {},
                     Scratch(discretization.get_mapping(), discretization.get_fe()),
                     Empty());
-    if (error)
-      std::rethrow_exception(error);
+    errors.rethrow();
     summarize();
   }
 

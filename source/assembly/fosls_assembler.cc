@@ -5,11 +5,10 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <fosls_contact/assembly/fosls_assembler.h>
+#include <fosls_contact/assembly/worker_exceptions.h>
 #include <fosls_contact/discretization/hanging_nodes.h>
 
 #include <algorithm>
-#include <exception>
-#include <mutex>
 
 namespace FoslsContact
 {
@@ -357,19 +356,14 @@ namespace FoslsContact
     // the global matrices one cell after the other in cell order, so the
     // result does not depend on the number of threads.
     //
-    // An exception in a WorkStream worker aborts the program (deal.II
-    // prints it and calls std::abort); a bad expression met here, e.g. an
-    // obstacle normal that evaluates to zero, must end in the usual
-    // one-line error instead. So the worker keeps the first message and
-    // the exception is thrown after the loop.
-    std::mutex         error_mutex;
-    std::exception_ptr error;
+    // An exception in a worker is kept and thrown after the loop
+    // (WorkerExceptions).
+    WorkerExceptions errors;
     auto worker = [&](const auto &cell, AssemblyScratch<dim> &scratch, AssemblyCopy &copy) {
       copy.valid = false;
       if (data.active_mesh ? cell->is_artificial() : !Discretization<dim>::is_present(cell))
         return; // no DoFs on this process
-      try
-        {
+      errors.guard([&]() {
           if (copy.dofs.size() != n) // (grown by eliminate_hanging() for another cell)
             copy = AssemblyCopy(n);
           copy.owned = data.owns(cell);
@@ -405,13 +399,7 @@ namespace FoslsContact
           if (copy.touches_contact)
             copy.k_compl *= 2.;
           copy.valid = true;
-        }
-      catch (...)
-        {
-          std::lock_guard<std::mutex> lock(error_mutex);
-          if (!error)
-            error = std::current_exception();
-        }
+        });
     };
     // Only the owned rows are summed here; every cell at an owned DoF is
     // here (owned or ghost), so they are complete. The ghost rows the
@@ -455,11 +443,11 @@ namespace FoslsContact
     else
       WorkStream::run(
         dof_handler.begin_mg(level), dof_handler.end_mg(level), worker, copier, scratch, AssemblyCopy(n));
-    if (error)
+    if (errors.caught())
       {
         qp.matrix_eq.clear();
         qp.matrix_compl.clear();
-        std::rethrow_exception(error);
+        errors.rethrow();
       }
     // an eliminated DoF keeps a unit diagonal (it is fixed at zero), so
     // that the matrix stays regular for the direct solvers

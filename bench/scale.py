@@ -2,7 +2,9 @@
 """What a whole run costs: wall time, solve time, set-up time and peak memory
 per DoF, for the square (prm/square.prm, levels 5-9) and the cube
 (prm/cube3d.prm, levels 3-7, as far as the machine's memory allows), one
-process with all its threads, the fastest of --runs runs; with --base-rev,
+process with all its threads, the fastest of --runs runs, and the cube at
+levels 5-7 once more with the patch rows read from the level matrices
+(Solver/Patch rows = matrix, this build only); with --base-rev,
 the same for another revision of the program (built here), run alternately
 with this build, and the ratios. Writes doc/scale_results.md (generated;
 doc/performance.md explains it) and prints it.
@@ -28,9 +30,16 @@ from parallel import ROOT, run  # noqa: E402
 
 RES = os.path.join(ROOT, "bench", "results", "scale")
 OUT = os.path.join(ROOT, "doc", "scale_results.md")
-CASES = [("square", "square.prm", range(5, 10), 4.0),
-         ("cube", "cube3d.prm", range(3, 8), 8.0)]  # (name, scene, levels, growth)
-TARGETS = {"wall_over_solve": 1.5, "bytes_per_dof": {"square": 1200, "cube": 2500}}
+# (name, scene, levels, growth per level, settings, also run by the base
+# build); "cube, rows from the matrix" is the cube with the patch smoother's
+# rows read from the level matrices (Solver/Patch rows = matrix), which
+# trades sweep time for memory
+MATRIX_ROWS = "cube, rows from the matrix"
+CASES = [("square", "square.prm", range(5, 10), 4.0, {}, True),
+         ("cube", "cube3d.prm", range(3, 8), 8.0, {}, True),
+         (MATRIX_ROWS, "cube3d.prm", range(5, 8), 8.0, {"Solver/Patch rows": "matrix"}, False)]
+TARGETS = {"wall_over_solve": 1.5,
+           "bytes_per_dof": {"square": 1200, "cube": 2500, MATRIX_ROWS: 2500}}
 
 
 def arguments():
@@ -71,15 +80,16 @@ def build_base(rev):
     return os.path.join(build, "fosls-contact")
 
 
-def measure(binaries, scene, level, runs, threads, tag):
+def measure(binaries, scene, level, runs, threads, tag, settings):
     """{build: summary of its fastest run by wall time}, builds alternated."""
     names = list(binaries)
     best = {}
     for k in range(runs):
         shift = k % len(names)
         for name in names[shift:] + names[:shift]:
-            out = os.path.join(RES, f"{tag}_{name}_L{level}")
-            s = run(scene, {"Geometry/Levels": str(level)}, 1, threads, out,
+            out = os.path.join(RES, f"{tag.split(',')[0]}{'_matrix_rows' * bool(settings)}_"
+                                    f"{name}_L{level}")
+            s = run(scene, dict(settings, **{"Geometry/Levels": str(level)}), 1, threads, out,
                     binary=binaries[name])
             if name not in best or s["wall_s"] < best[name]["wall_s"]:
                 best[name] = s
@@ -128,7 +138,7 @@ def targets(results):
             row(f"wall <= {TARGETS['wall_over_solve']} x solve, {tag} level {level}",
                 f"{ratio:.2f} ({s['wall_s']:.2f} s / {s['time_solve_s']:.2f} s)",
                 ratio <= TARGETS["wall_over_solve"])
-    for tag in ("square", "cube"):
+    for tag in ("square", "cube", MATRIX_ROWS):
         level, s = finest(results, tag)
         if s:
             per_dof = s["peak_rss_mb"] * 1024 * 1024 / s["dofs"]
@@ -176,6 +186,36 @@ def phases(results):
     return lines + [""]
 
 
+def matrix_rows(results):
+    """The cube with the patch smoother's rows read from the level matrices
+    against copied rows (this build, the same levels): the time of the
+    solve and of its smoothing, and the peak memory, with the phase after
+    which the resident memory reached it."""
+    lines = []
+    for level in range(3, 8):
+        copied, matrix = results.get(("cube", level)), results.get((MATRIX_ROWS, level))
+        if not (copied and matrix):
+            continue
+        c, m = copied["this"], matrix["this"]
+        smoothing = [x["time_sections_s"].get("Solve: smoothing", 0.) for x in (c, m)]
+        peak_phase = max(m["memory_by_phase"], key=lambda p: p["rss_mb"])["phase"]
+        lines.append(f"| {level} | {c['time_solve_s']:.2f} | {m['time_solve_s']:.2f} | "
+                     f"{m['time_solve_s'] / c['time_solve_s']:.2f} | "
+                     f"{smoothing[1] / smoothing[0]:.2f} | {m['wall_s'] / c['wall_s']:.2f} | "
+                     f"{c['peak_rss_mb']:.0f} | {m['peak_rss_mb']:.0f} | "
+                     f"{m['peak_rss_mb'] * 1024 * 1024 / m['dofs']:.0f} | {peak_phase} |")
+    if not lines:
+        return []
+    return ["## The cube with the patch rows read from the level matrices\n",
+            "`Solver/Patch rows = matrix` against the default `copied` (this build; the same "
+            "iterates to the bit). Ratios are matrix / copied; the peak phase is the phase "
+            "after which the resident memory of the matrix run was highest.\n",
+            "| level | solve s, copied | solve s, matrix | solve ratio | smoothing ratio | "
+            "wall ratio | peak MB, copied | peak MB, matrix | bytes per DoF, matrix | "
+            "peak phase |",
+            "|---|---|---|---|---|---|---|---|---|---|"] + lines + [""]
+
+
 def main():
     a = arguments()
     os.makedirs(RES, exist_ok=True)
@@ -183,8 +223,9 @@ def main():
     if a.base_rev:
         binaries["base"] = build_base(a.base_rev)
     results = {}
-    for tag, scene, levels, growth in CASES:
+    for tag, scene, levels, growth, settings, with_base in CASES:
         previous_mb = None
+        builds = binaries if with_base else {"this": binaries["this"]}
         for level in levels:
             if level > a.max_level:
                 continue
@@ -193,7 +234,7 @@ def main():
                       f"expected, {available_mb() / 1024:.1f} GB available", flush=True)
                 results[(tag, level)] = None
                 continue
-            best = measure(binaries, scene, level, a.runs, a.threads, tag)
+            best = measure(builds, scene, level, a.runs, a.threads, tag, settings)
             results[(tag, level)] = best
             previous_mb = max(s["peak_rss_mb"] for s in best.values())
 
@@ -220,7 +261,9 @@ def main():
         row = [tag, level, s["dofs"], f"{s['wall_s']:.2f}", f"{s['time_solve_s']:.2f}",
                f"{s['time_setup_s']:.2f}", f"{s['wall_s'] / s['time_solve_s']:.2f}",
                f"{s['peak_rss_mb']:.0f}", f"{per_dof:.0f}"]
-        if a.base_rev:
+        if a.base_rev and "base" not in best:
+            row += ["", "", "", ""]
+        elif a.base_rev:
             b = best["base"]
             b_per_dof = b["peak_rss_mb"] * 1024 * 1024 / b["dofs"]
             row += [f"{b['wall_s']:.2f}", f"{b_per_dof:.0f}", f"{s['wall_s'] / b['wall_s']:.2f}",
@@ -245,6 +288,7 @@ def main():
 
     lines += targets(results)
     lines += phases(results)
+    lines += matrix_rows(results)
 
     # memory by structure, where the build reports it
     for (tag, level), best in results.items():

@@ -156,6 +156,17 @@ namespace FoslsContact
                         "the patch smoother, the truncated sign-correct transfer, "
                         "the Galerkin operators and the exact coarse solve as its "
                         "parts). The iterates are the same up to round-off.");
+      prm.declare_entry("Patch rows",
+                        "copied",
+                        Patterns::Selection("copied|matrix"),
+                        "Where the patch smoother reads the matrix rows of a "
+                        "vertex patch: copied (each patch keeps a copy of its rows "
+                        "next to each other: the fastest sweeps) or matrix (the "
+                        "sweeps read the rows of the level matrices: less memory, "
+                        "most of all in 3D, where a face DoF's row is in the "
+                        "patches of the face's four vertices, but slower sweeps; "
+                        "measured in doc/performance.md). The iterates are the "
+                        "same to the bit.");
       declare_run_parameters(prm, defaults);
       prm.leave_subsection();
     }
@@ -191,6 +202,7 @@ namespace FoslsContact
       definiteness_max_dofs = prm.get_integer("Definiteness check max dofs");
       krylov_steps          = prm.get_integer("Krylov steps");
       linear_cycle = prm.get("Linear cycle") == "own" ? LinearCycle::own : LinearCycle::dealii;
+      patch_rows   = prm.get("Patch rows") == "copied" ? PatchRows::copied : PatchRows::matrix;
       threads               = prm.get_integer("Threads");
       check_coarse_defects  = prm.get_bool("Check coarse defects");
       cross_check           = prm.get_bool("Cross check");

@@ -16,7 +16,8 @@ namespace FoslsContact
     , parameters(parameters)
     , fine_sparsity(&fine_sparsity)
     , finest(hierarchy.finest_level())
-    , pre_smoother(finest + 1, parameters.pre_smoothing, false, &counters.smoothing)
+    , pre_smoother(
+        finest + 1, parameters.pre_smoothing, false, &counters.smoothing, parameters.patch_rows)
     , post_smoother(pre_smoother, parameters.post_smoothing, true)
     // (the plain cycle reroutes the flux of partly truncated coarse faces)
     , rerouting(hierarchy, fine_sparsity, parameters.krylov_steps == 0)

@@ -115,7 +115,8 @@ namespace FoslsContact
      * neighbourhood (the patch DoFs, then the other columns of their
      * rows), as offsets; then allocate the packed arrays, uninitialized:
      * the fill writes every entry, and its threads touch the pages first
-     * (zeroing 150 MB on level 9 took a fifth of the set-up).
+     * (zeroing 150 MB on level 9 took a fifth of the set-up). Rows read
+     * from the matrix: no rows, and a neighbourhood is the patch.
      */
     void
     lay_out(PackedPatches &                             level,
@@ -125,59 +126,68 @@ namespace FoslsContact
     {
       const unsigned int n_patches = level.box_qp.size();
       std::atomic<bool>  too_wide{false};
-      level.row_start.assign(patch_dofs.size() + 1, 0);
+      level.row_start.assign(level.matrix ? 0 : patch_dofs.size() + 1, 0);
       level.neighbor_start.assign(n_patches + 1, 0);
       level.inverse_start.assign(n_patches + 1, 0);
-      for_subranges(
-        0u,
-        n_patches,
-        [&](const unsigned int begin, const unsigned int end) {
-          PatchWork &w      = thread_work.get();
-          auto &     local  = w.local;
-          auto &     marked = w.marked;
-          for (unsigned int k = begin; k < end; ++k)
-            {
-              const auto *dofs = patch_dofs.data() + level.start[k];
-              const auto  n    = level.start[k + 1] - level.start[k];
-              marked.assign(dofs, dofs + n);
-              for (unsigned int a = 0; a < n; ++a)
-                local[dofs[a]] = a;
-              for (unsigned int a = 0; a < n; ++a)
-                {
-                  std::size_t nonzeros = 0;
-                  for (auto e = matrix.begin(dofs[a]); e != matrix.end(dofs[a]); ++e)
-                    if (e->value() != 0.)
-                      {
-                        ++nonzeros;
-                        if (local[e->column()] == numbers::invalid_unsigned_int)
-                          {
-                            local[e->column()] = marked.size();
-                            marked.push_back(e->column());
-                          }
-                      }
-                  level.row_start[level.start[k] + a + 1] = nonzeros;
-                }
-              too_wide =
-                too_wide || marked.size() > std::numeric_limits<std::uint16_t>::max() + 1u;
-              level.neighbor_start[k + 1] = marked.size();
-              level.inverse_start[k + 1]  = n * (n + 1) / 2;
-              for (const auto dof : marked)
-                local[dof] = numbers::invalid_unsigned_int;
-            }
-        },
-        count_grain);
+      if (level.matrix)
+        for (unsigned int k = 0; k < n_patches; ++k)
+          {
+            const auto n                = level.start[k + 1] - level.start[k];
+            level.neighbor_start[k + 1] = n;
+            level.inverse_start[k + 1]  = n * (n + 1) / 2;
+          }
+      else
+        for_subranges(
+          0u,
+          n_patches,
+          [&](const unsigned int begin, const unsigned int end) {
+            PatchWork &w      = thread_work.get();
+            auto &     local  = w.local;
+            auto &     marked = w.marked;
+            for (unsigned int k = begin; k < end; ++k)
+              {
+                const auto *dofs = patch_dofs.data() + level.start[k];
+                const auto  n    = level.start[k + 1] - level.start[k];
+                marked.assign(dofs, dofs + n);
+                for (unsigned int a = 0; a < n; ++a)
+                  local[dofs[a]] = a;
+                for (unsigned int a = 0; a < n; ++a)
+                  {
+                    std::size_t nonzeros = 0;
+                    for (auto e = matrix.begin(dofs[a]); e != matrix.end(dofs[a]); ++e)
+                      if (e->value() != 0.)
+                        {
+                          ++nonzeros;
+                          if (local[e->column()] == numbers::invalid_unsigned_int)
+                            {
+                              local[e->column()] = marked.size();
+                              marked.push_back(e->column());
+                            }
+                        }
+                    level.row_start[level.start[k] + a + 1] = nonzeros;
+                  }
+                too_wide =
+                  too_wide || marked.size() > std::numeric_limits<std::uint16_t>::max() + 1u;
+                level.neighbor_start[k + 1] = marked.size();
+                level.inverse_start[k + 1]  = n * (n + 1) / 2;
+                for (const auto dof : marked)
+                  local[dof] = numbers::invalid_unsigned_int;
+              }
+          },
+          count_grain);
       AssertThrow(!too_wide,
                   ExcMessage("PatchSmoother: a patch's rows reach more than 65536 DoFs"));
       for (auto *offsets : {&level.row_start, &level.neighbor_start, &level.inverse_start})
         std::partial_sum(offsets->begin(), offsets->end(), offsets->begin());
       auto allocate = [](auto &array, const std::size_t size) {
-        if (size > array.capacity())
-          array.clear(); // no copy of the old entries
+        if (size > array.capacity() || size == 0)
+          array.clear(); // no copy of the old entries; no rows kept
         array.resize_fast(size);
       };
+      const std::size_t n_row_entries = level.row_start.empty() ? 0 : level.row_start.back();
       allocate(level.neighbors, level.neighbor_start.back());
-      allocate(level.columns, level.row_start.back());
-      allocate(level.values, level.row_start.back());
+      allocate(level.columns, n_row_entries);
+      allocate(level.values, n_row_entries);
       allocate(level.inverse, level.inverse_start.back());
     }
 
@@ -188,8 +198,9 @@ namespace FoslsContact
      * local_to_global() in the comparison made the sort a fifth of the
      * set-up), columns numbered within the neighbourhood, and the upper
      * triangle of the inverse of the patch matrix (with a BoxQP for a
-     * patch with a bounded DoF). Sets @p coupled where a row reaches a DoF
-     * of another patch of the color (@p patch_of).
+     * patch with a bounded DoF); with rows read from the matrix only the
+     * patch's DoFs and the inverse. Sets @p coupled where a row reaches a
+     * DoF of another patch of the color (@p patch_of).
      */
     void
     fill_patch(PackedPatches &                             level,
@@ -211,35 +222,51 @@ namespace FoslsContact
         w.local[neighbors[a]] = a;
       FullMatrix<double> &M = w.matrix;
       M.reinit(n, n);
-      for (unsigned int a = 0; a < n; ++a)
+      if (level.matrix)
         {
-          w.entries.clear();
-          for (auto e = matrix.begin(neighbors[a]); e != matrix.end(neighbors[a]); ++e)
-            if (e->value() != 0.)
-              w.entries.emplace_back(e->column(), e->value());
-          // (an insertion sort: a row comes sorted but for its diagonal,
-          // and for ghost columns on many processes)
-          for (auto e = w.entries.begin() + 1; e < w.entries.end(); ++e)
-            for (auto f = e; f != w.entries.begin() && global[f->first] < global[(f - 1)->first];
-                 --f)
-              std::iter_swap(f, f - 1);
-          auto j = level.row_start[level.start[k] + a];
-          for (const auto &[column, value] : w.entries)
-            {
-              if (patch_of[column] != numbers::invalid_unsigned_int && patch_of[column] != k)
-                coupled = true;
-              if (w.local[column] == numbers::invalid_unsigned_int)
+          // the patch matrix and the coupling check only: the rows stay
+          // in the matrix
+          for (unsigned int a = 0; a < n; ++a)
+            for (auto e = matrix.begin(neighbors[a]); e != matrix.end(neighbors[a]); ++e)
+              if (e->value() != 0.)
                 {
-                  w.local[column] = m;
-                  neighbors[m++]  = column;
+                  const auto column = e->column();
+                  if (patch_of[column] != numbers::invalid_unsigned_int && patch_of[column] != k)
+                    coupled = true;
+                  if (w.local[column] != numbers::invalid_unsigned_int)
+                    M(a, w.local[column]) = e->value();
                 }
-              level.columns[j] = w.local[column];
-              level.values[j]  = value;
-              if (w.local[column] < n)
-                M(a, w.local[column]) = value;
-              ++j;
-            }
         }
+      else
+        for (unsigned int a = 0; a < n; ++a)
+          {
+            w.entries.clear();
+            for (auto e = matrix.begin(neighbors[a]); e != matrix.end(neighbors[a]); ++e)
+              if (e->value() != 0.)
+                w.entries.emplace_back(e->column(), e->value());
+            // (an insertion sort: a row comes sorted but for its diagonal,
+            // and for ghost columns on many processes)
+            for (auto e = w.entries.begin() + 1; e < w.entries.end(); ++e)
+              for (auto f = e; f != w.entries.begin() && global[f->first] < global[(f - 1)->first];
+                   --f)
+                std::iter_swap(f, f - 1);
+            auto j = level.row_start[level.start[k] + a];
+            for (const auto &[column, value] : w.entries)
+              {
+                if (patch_of[column] != numbers::invalid_unsigned_int && patch_of[column] != k)
+                  coupled = true;
+                if (w.local[column] == numbers::invalid_unsigned_int)
+                  {
+                    w.local[column] = m;
+                    neighbors[m++]  = column;
+                  }
+                level.columns[j] = w.local[column];
+                level.values[j]  = value;
+                if (w.local[column] < n)
+                  M(a, w.local[column]) = value;
+                ++j;
+              }
+          }
       for (unsigned int j = 0; j < m; ++j)
         w.local[neighbors[j]] = numbers::invalid_unsigned_int;
 
@@ -266,7 +293,8 @@ namespace FoslsContact
                        const std::vector<unsigned int> &                         patch_color,
                        const unsigned int                                        n_colors,
                        const std::vector<DoFRole> &                              role,
-                       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner)
+                       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+                       const bool                                                copy_rows)
   {
     // The layout is counted first and then filled in place, patch by patch
     // in parallel: every array is allocated once, at its size, and left
@@ -277,7 +305,18 @@ namespace FoslsContact
     // into the packed arrays, needed both at once: 18% more peak memory on
     // the 3D ball at level 5, against 1% less this way.
     linear_patch.clear();
-    const unsigned int                   n_dofs = matrix.m();
+    const unsigned int n_dofs = matrix.m();
+    // (row_defect() sums in global order only where the owned DoFs are
+    // one range of global indices, as deal.II distributes them; otherwise
+    // the rows are copied)
+    n_owned = partitioner->locally_owned_size();
+    this->matrix =
+      copy_rows || !partitioner->locally_owned_range().is_contiguous() ? nullptr : &matrix;
+    matrix_values = this->matrix && n_dofs > 0 ? &matrix(0, 0) : nullptr;
+    ghosts_above  = n_owned;
+    for (unsigned int g = n_owned; g < n_dofs; ++g)
+      if (partitioner->local_to_global(g) < partitioner->local_range().first)
+        ++ghosts_above;
     std::vector<types::global_dof_index> patch_dofs;
     select_patches(*this,
                    matrix,

@@ -37,9 +37,10 @@ namespace FoslsContact
     };
 
     /**
-     * The defect g = r - A v on the DoFs of patch k (its rows against the
-     * values of its neighbourhood) and the room to their bounds,
-     * s = max(0, ub - v) (+inf where unbounded).
+     * The defect g = r - A v on the DoFs of patch k (its copied rows
+     * against the values of its neighbourhood, or the rows of the level
+     * matrix) and the room to their bounds, s = max(0, ub - v) (+inf where
+     * unbounded).
      */
     void
     patch_defect(const PackedPatches &level,
@@ -55,6 +56,19 @@ namespace FoslsContact
       w.g.resize(n);
       w.s.resize(n);
       w.c.resize(n);
+      const auto room = [&](const unsigned int a, const types::global_dof_index i) {
+        return level.bounded[level.start[k] + a] ? std::max(0., ub[i] - v[i]) :
+                                                   std::numeric_limits<double>::infinity();
+      };
+      if (level.matrix != nullptr)
+        {
+          for (unsigned int a = 0; a < n; ++a)
+            {
+              w.g[a] = level.row_defect(dofs[a], v, r[dofs[a]]);
+              w.s[a] = room(a, dofs[a]);
+            }
+          return;
+        }
       w.near.resize(m);
       for (unsigned int j = 0; j < m; ++j)
         w.near[j] = v[dofs[j]];
@@ -69,8 +83,7 @@ namespace FoslsContact
           for (std::size_t e = first; e < last; ++e)
             gi -= value[e] * w.near[column[e]];
           w.g[a] = gi;
-          w.s[a] = level.bounded[level.start[k] + a] ? std::max(0., ub[i] - v[i]) :
-                                                       std::numeric_limits<double>::infinity();
+          w.s[a] = room(a, i);
         }
     }
 
@@ -166,9 +179,10 @@ namespace FoslsContact
   PatchSmoother::PatchSmoother(const unsigned int n_levels,
                                const unsigned int steps,
                                const bool         transpose,
-                               SectionTime *      time)
+                               SectionTime *      time,
+                               const PatchRows    rows)
     : MGSmoother<LevelVector>(steps, false, false, transpose)
-    , shared(std::make_shared<Shared>(n_levels))
+    , shared(std::make_shared<Shared>(n_levels, rows))
     , time(time)
   {}
 
@@ -194,7 +208,8 @@ namespace FoslsContact
   {
     shared->obstacles[l] = nullptr;
     shared->linear[l]    = false;
-    shared->levels[l].build(matrix, patches, patch_color, n_colors, role, partitioner);
+    shared->levels[l].build(
+      matrix, patches, patch_color, n_colors, role, partitioner, shared->rows == PatchRows::copied);
   }
 
 

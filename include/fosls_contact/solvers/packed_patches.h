@@ -35,6 +35,16 @@ namespace FoslsContact
    * - only patches with a bounded DoF can hit an obstacle, so only they
    *   keep a BoxQP for the constrained case (box_qp[k], an index into qps).
    *
+   * Without copied rows (build() with copy_rows false) a patch's
+   * neighbourhood is just its DoFs, and row_start, columns and values are
+   * empty: the sweeps read the rows of the level matrix (matrix), with
+   * the same terms in the same order (row_defect()), so the iterates are
+   * the same to the bit. In 3D a face DoF's row is in the patches of the
+   * face's four vertices: 1,800 of the 2,270 bytes per DoF of the cube's
+   * patches at level 7 are the copied rows. The price is the sweep's
+   * time: the rows of a patch lie wherever the matrix has them, not one
+   * after the other in sweep order (doc/performance.md).
+   *
    * The patches of color c are color_start[c] .. color_start[c+1]. The
    * large arrays are AlignedVectors, whose resize_fast() leaves new
    * entries uninitialized for the parallel fill of build().
@@ -50,14 +60,28 @@ namespace FoslsContact
      * dropped. Refuses colors under which the matrix couples two patches
      * of one color. Rows are stored with their columns in global order
      * (@p partitioner), so that every process that relaxes a patch sums
-     * in the same order.
+     * in the same order. With @p copy_rows false the rows stay in
+     * @p matrix, which must then outlive the patches unchanged.
      */
     void build(const SparseMatrix<double> &                              matrix,
                const std::vector<std::vector<types::global_dof_index>> & patches,
                const std::vector<unsigned int> &                         patch_color,
                const unsigned int                                        n_colors,
                const std::vector<DoFRole> &                              role,
-               const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner);
+               const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+               const bool                                                copy_rows = true);
+
+    /**
+     * g_i minus the product of row @p i of #matrix (rows not copied) with
+     * @p v: the terms in the global order of their columns, as a copied
+     * row has them, so that the result is the same to the bit. A row of
+     * the matrix is the diagonal and then the other local columns in
+     * increasing order: the owned DoFs (contiguous and increasing in
+     * global order too), the ghosts below the owned range and the ghosts
+     * above it. Zero entries, which a copied row leaves out, subtract
+     * exact zeros.
+     */
+    double row_defect(const unsigned int i, const double *v, double g_i) const;
 
     /**
      * The roles of the linear problem of a Newton step (set up with
@@ -104,7 +128,52 @@ namespace FoslsContact
       std::vector<double>       inverse;
     };
     std::vector<LinearPatch> linear_patch;
+    /**
+     * The level matrix whose rows the sweeps read (nullptr if copied), and
+     * its values by the pattern's linear index: the address of entry
+     * (0, 0), the first one a square SparseMatrix stores.
+     */
+    const SparseMatrix<double> *matrix        = nullptr;
+    const double *              matrix_values = nullptr;
+    /**
+     * The owned DoFs are the local ones below n_owned, the ghosts below
+     * the owned range in global order those from n_owned to ghosts_above.
+     */
+    unsigned int n_owned = 0, ghosts_above = 0;
   };
+
+
+  inline double
+  PackedPatches::row_defect(const unsigned int i, const double *v, double g_i) const
+  {
+    const SparsityPattern &pattern = matrix->get_sparsity_pattern();
+    const unsigned int     length  = pattern.row_length(i);
+    const double *         value   = matrix_values + pattern.begin(i)->global_index();
+    const auto column = [&](const unsigned int j) { return pattern.column_number(i, j); };
+    unsigned int above = length; // the first ghost above the owned range
+    while (above > 1 && column(above - 1) >= ghosts_above)
+      --above;
+    unsigned int ghosts = above; // the first ghost
+    while (ghosts > 1 && column(ghosts - 1) >= n_owned)
+      --ghosts;
+    const double diagonal_term = value[0] * v[i];
+    // the terms of entries [j, end) in order, the diagonal's at its column
+    // if @p holds_diagonal
+    const auto subtract = [&](unsigned int j, const unsigned int end, const bool holds_diagonal) {
+      if (holds_diagonal)
+        {
+          for (; j < end && column(j) < i; ++j)
+            g_i -= value[j] * v[column(j)];
+          g_i -= diagonal_term;
+        }
+      for (; j < end; ++j)
+        g_i -= value[j] * v[column(j)];
+    };
+    subtract(ghosts, above, n_owned <= i && i < ghosts_above);
+    subtract(1, ghosts, i < n_owned);
+    subtract(above, length, ghosts_above <= i);
+    return g_i;
+  }
 } // namespace FoslsContact
 
 #endif

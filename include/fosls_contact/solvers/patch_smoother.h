@@ -3,6 +3,7 @@
 
 #include <deal.II/multigrid/mg_smoother.h>
 
+#include <fosls_contact/parameters/solver.h>
 #include <fosls_contact/qp/level_algebra.h>
 #include <fosls_contact/solvers/packed_patches.h>
 #include <fosls_contact/solvers/solver_statistics.h>
@@ -57,15 +58,19 @@ namespace FoslsContact
   class PatchSmoother : public MGSmoother<LevelVector>
   {
   public:
+    using PatchRows = Parameters::Solver::PatchRows;
+
     /**
      * A smoother for levels 0 .. @p n_levels - 1 (no patches yet) with
      * @p steps sweeps, backward if @p transpose; the wall time of its
-     * sweeps is added to @p time if given.
+     * sweeps is added to @p time if given. Its patches copy their matrix
+     * rows or read those of the level matrices (@p rows).
      */
     PatchSmoother(const unsigned int n_levels,
                   const unsigned int steps     = 1,
                   const bool         transpose = false,
-                  SectionTime *      time      = nullptr);
+                  SectionTime *      time      = nullptr,
+                  const PatchRows    rows      = PatchRows::copied);
     /**
      * A smoother on the patches, obstacles and roles of @p other (what is
      * set on one, the other sees), with its own @p steps and direction.
@@ -75,7 +80,9 @@ namespace FoslsContact
     /**
      * Pack the patches of level @p l for @p matrix (PackedPatches::build()).
      * The level relaxes with the obstacles of the next set_obstacles() and
-     * the roles @p role.
+     * the roles @p role. Where the rows are read from @p matrix it must
+     * stay as it is until the next call for the level (the multigrid
+     * cycles call it after every change of a Galerkin operator).
      */
     void initialize_level(const unsigned int                                      l,
                           const SparseMatrix<double> &                            matrix,
@@ -123,11 +130,13 @@ namespace FoslsContact
     /** What the smoothers on the same patches share. */
     struct Shared
     {
-      explicit Shared(const unsigned int n_levels)
-        : levels(n_levels)
+      Shared(const unsigned int n_levels, const PatchRows rows)
+        : rows(rows)
+        , levels(n_levels)
         , obstacles(n_levels, nullptr)
         , linear(n_levels, false)
       {}
+      const PatchRows                   rows;
       std::vector<PackedPatches>        levels;
       std::vector<const LevelVector *>  obstacles;
       std::vector<bool>                 linear;

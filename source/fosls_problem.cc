@@ -84,9 +84,31 @@ namespace FoslsContact
     Timer              wall;
     const unsigned int L = discretization->finest_level();
     qp.reinit(discretization->level(L));
-    FoslsAssembler<dim>(*discretization, parameters.weights)
-      .assemble(L, qp);
+    std::function<void()> release;
+    if (!needs_fine_coupling_pattern(false))
+      release = [this, L]() { discretization->release_coupling_pattern(L); };
+    FoslsAssembler<dim>(*discretization, parameters.weights).assemble(L, qp, release);
     time_setup += wall.wall_time();
+  }
+
+
+  template <int dim>
+  bool
+  FoslsProblem<dim>::needs_fine_coupling_pattern(const bool after_setup) const
+  {
+    const auto &solver = parameters.solver;
+    // (active set and projected Gauss-Seidel factorize or gather on it, a
+    // one-level multigrid solves its only level directly, and the cross
+    // check runs the active set method)
+    if (solver.type != Parameters::Solver::Type::monotone_multigrid || solver.cross_check ||
+        discretization->finest_level() == 0)
+      return true;
+    // (ProblemChecks::check_definiteness(): on the finest level if it has
+    // at most the check's DoFs)
+    const bool checked_here =
+      solver.definiteness_max_dofs > 0 &&
+      discretization->level(discretization->finest_level()).n_dofs <= solver.definiteness_max_dofs;
+    return checked_here && !after_setup;
   }
 
 
@@ -123,11 +145,8 @@ namespace FoslsContact
     Timer              wall;
     solver = SolverChoice<dim>::make(
       parameters.solver, *discretization, *transfer, qp, discretization->finest_level());
-    // the multigrid solve does not need the finest level's coupling
-    // pattern (the checks that factorize on it are done; the cross check's
-    // active set method and a one-level solve's coarse solver need it)
-    if (parameters.solver.type == Parameters::Solver::Type::monotone_multigrid &&
-        !parameters.solver.cross_check && discretization->finest_level() > 0)
+    // (released during the assembly where the checks did not need it)
+    if (qp.coupling_sparsity && !needs_fine_coupling_pattern(true))
       {
         discretization->release_coupling_pattern(discretization->finest_level());
         qp.coupling_sparsity = nullptr;

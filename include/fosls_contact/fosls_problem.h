@@ -54,7 +54,22 @@ namespace FoslsContact
 
   private:
     void setup();
+    /**
+     * Assemble the finest level's functional. Where only the multigrid
+     * solve follows and the definiteness check runs on a coarser level,
+     * the finest level's coupling pattern is freed during the compression
+     * of A (ConstrainedQP::compress_matrices()), so that it and A's
+     * compressed values are never held at once; otherwise setup_solver()
+     * frees it, or (active set solvers, cross check) the run keeps it.
+     */
     void assemble();
+    /**
+     * Whether the run needs the finest level's coupling pattern after the
+     * assembly (after the checks and the solver's set-up if @p after_setup):
+     * the solvers that factorize the matrix and a definiteness check on
+     * the finest level do, the multigrid solve does not.
+     */
+    bool needs_fine_coupling_pattern(const bool after_setup) const;
     /** The checks of the assembled problem (ProblemChecks). */
     void check_problem();
     void make_initial_guess();

@@ -340,7 +340,9 @@ namespace FoslsContact
 
   template <int dim>
   void
-  FoslsAssembler<dim>::assemble(const unsigned int level, ConstrainedQP &qp) const
+  FoslsAssembler<dim>::assemble(const unsigned int           level,
+                                ConstrainedQP &              qp,
+                                const std::function<void()> &release_coupling_pattern) const
   {
     const auto &       fe   = discretization.get_fe();
     const auto &       data = discretization.level(level);
@@ -454,7 +456,7 @@ namespace FoslsContact
     for (const auto &hanging : data.hanging)
       if (hanging.first < n_owned)
         qp.matrix.set(hanging.first, hanging.first, 1.);
-    qp.compress_matrices();
+    qp.compress_matrices(release_coupling_pattern);
     qp.constant_eq = Utilities::MPI::sum(qp.constant_eq, qp.get_communicator());
     qp.constant    = qp.constant_eq;
   }

@@ -35,7 +35,7 @@ namespace FoslsContact
 
 
   void
-  ConstrainedQP::compress_matrices()
+  ConstrainedQP::compress_matrices(const std::function<void()> &release_coupling_pattern)
   {
     zero_round_off(matrix, partitioner, round_off_drop, &matrix_eq);
     ghost_rows->import_into(matrix);
@@ -44,7 +44,9 @@ namespace FoslsContact
     // does not drop when the full-pattern values are freed)
     compress_to_nonzeros(matrix_eq, sparsity_eq);
     compress_to_nonzeros(matrix_compl, sparsity_compl);
-    compress_to_nonzeros(matrix, sparsity);
+    compress_to_nonzeros(matrix, sparsity, release_coupling_pattern);
+    if (release_coupling_pattern)
+      coupling_sparsity = nullptr;
   }
 
 

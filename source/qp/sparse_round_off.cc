@@ -3,6 +3,7 @@
 #include <fosls_contact/qp/sparse_round_off.h>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <vector>
 
@@ -82,7 +83,9 @@ namespace FoslsContact
 
 
   void
-  compress_to_nonzeros(SparseMatrix<double> &matrix, SparsityPattern &sparsity)
+  compress_to_nonzeros(SparseMatrix<double> &        matrix,
+                       SparsityPattern &             sparsity,
+                       const std::function<void()> &release_old_pattern)
   {
     Assert(&matrix.get_sparsity_pattern() != &sparsity, ExcInternalError());
     const unsigned int n = matrix.m();
@@ -127,43 +130,39 @@ namespace FoslsContact
 
     // Both patterns store a row as the diagonal and then the other
     // columns in increasing order, so a new row is a subsequence of the
-    // old one. values holds the new rows one after the other.
-    std::vector<std::size_t> row_start(n + 1, 0);
+    // old one, and the new rows one after the other are a subsequence of
+    // the old values: they move to the front of the old array in place
+    // (serially: a row may move over the rows before it).
+    const std::size_t n_new = sparsity.n_nonzero_elements();
+    double *const     front = n > 0 ? &matrix.diag_element(0) : nullptr;
+    std::size_t       k     = 0;
     for (unsigned int i = 0; i < n; ++i)
-      row_start[i + 1] = row_start[i] + sparsity.row_length(i);
-    std::vector<double> values(row_start[n]);
-    for_subranges(
-      0u,
-      n,
-      [&](const unsigned int begin, const unsigned int end) {
-        for (unsigned int i = begin; i < end; ++i)
+      {
+        auto e = matrix.begin(i);
+        for (auto s = sparsity.begin(i); s != sparsity.end(i); ++s)
           {
-            auto        e = matrix.begin(i);
-            std::size_t k = row_start[i];
-            for (auto s = sparsity.begin(i); s != sparsity.end(i); ++s)
-              {
-                while (e->column() != s->column())
-                  ++e;
-                values[k++] = e->value();
-              }
+            while (e->column() != s->column())
+              ++e;
+            front[k++] = e->value();
           }
-      },
-      grain);
-    // clear() first: SparseMatrix::reinit keeps an allocation that is
-    // large enough, which would be that of the full pattern
-    matrix.clear();
-    matrix.reinit(sparsity);
-    for_subranges(
-      0u,
-      n,
-      [&](const unsigned int begin, const unsigned int end) {
-        for (unsigned int i = begin; i < end; ++i)
-          {
-            std::size_t k = row_start[i];
-            for (auto e = matrix.begin(i); e != matrix.end(i); ++e)
-              e->value() = values[k++];
-          }
-      },
-      grain);
+      }
+    Assert(k == n_new, ExcInternalError());
+    if (release_old_pattern)
+      release_old_pattern();
+    // the new matrix stores its entries in the same order (entry (0, 0)
+    // first)
+    SparseMatrix<double> compressed(sparsity);
+    if (n > 0)
+      {
+        double *const values = &compressed.diag_element(0);
+        for_subranges(
+          std::size_t(0),
+          n_new,
+          [&](const std::size_t begin, const std::size_t end) {
+            std::copy(front + begin, front + end, values + begin);
+          },
+          std::size_t(1) << 16);
+      }
+    matrix = std::move(compressed);
   }
 } // namespace FoslsContact

@@ -7,6 +7,7 @@
 #include <fosls_contact/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
 
+#include <functional>
 #include <vector>
 
 namespace FoslsContact
@@ -42,8 +43,13 @@ namespace FoslsContact
     FoslsAssembler(const Discretization<dim> &discretization,
                    const Parameters::Weights &weights);
 
-    /** Fill @p qp (sized with ConstrainedQP::reinit) on level @p level. */
-    void assemble(const unsigned int level, ConstrainedQP &qp) const;
+    /**
+     * Fill @p qp (sized with ConstrainedQP::reinit) on level @p level;
+     * @p release_coupling_pattern as in ConstrainedQP::compress_matrices().
+     */
+    void assemble(const unsigned int           level,
+                  ConstrainedQP &              qp,
+                  const std::function<void()> &release_coupling_pattern = {}) const;
 
     /**
      * The compliance tensor A sigma = (sigma - kappa tr(sigma) I) / (2 mu)

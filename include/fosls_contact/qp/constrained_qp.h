@@ -8,6 +8,8 @@
 #include <fosls_contact/qp/level_algebra.h>
 #include <fosls_contact/qp/sparse_round_off.h>
 
+#include <functional>
+
 namespace FoslsContact
 {
   /** Residuals of the KKT conditions of a ConstrainedQP, relative to |b|. */
@@ -136,8 +138,11 @@ namespace FoslsContact
      * After the owned rows were assembled: drop A's round-off entries
      * (round_off_drop), copy its ghost rows from their owners, and put A,
      * matrix_eq and matrix_compl on patterns of their nonzero entries.
+     * @p release_coupling_pattern, if given, frees the coupling pattern
+     * (A's pattern until then) as soon as compress_to_nonzeros() no longer
+     * reads it; coupling_sparsity is then null.
      */
-    void compress_matrices();
+    void compress_matrices(const std::function<void()> &release_coupling_pattern = {});
 
     /** J(x). */
     double value(const LevelVector &x) const;

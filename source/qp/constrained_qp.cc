@@ -39,9 +39,8 @@ namespace FoslsContact
   {
     zero_round_off(matrix, partitioner, round_off_drop, &matrix_eq);
     ghost_rows->import_into(matrix);
-    // the small parts first: the memory they free takes A's new pattern
-    // (freed memory stays with the process, measured: the resident memory
-    // does not drop when the full-pattern values are freed)
+    // the small parts first: what their compression frees (blocks under
+    // 32 MB stay on the heap, app/main.cc) can take A's new pattern
     compress_to_nonzeros(matrix_eq, sparsity_eq);
     compress_to_nonzeros(matrix_compl, sparsity_compl);
     compress_to_nonzeros(matrix, sparsity, release_coupling_pattern);

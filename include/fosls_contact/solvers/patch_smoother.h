@@ -82,7 +82,9 @@ namespace FoslsContact
      * The level relaxes with the obstacles of the next set_obstacles() and
      * the roles @p role. Where the rows are read from @p matrix it must
      * stay as it is until the next call for the level (the multigrid
-     * cycles call it after every change of a Galerkin operator).
+     * cycles call it after every change of the Galerkin operator of a
+     * level they smooth; LevelOperators::needs_update() rebuilds an
+     * operator whose truncation or rerouting changed since).
      */
     void initialize_level(const unsigned int                                      l,
                           const SparseMatrix<double> &                            matrix,

@@ -103,11 +103,9 @@ namespace FoslsContact
     if (solver.type != Parameters::Solver::Type::monotone_multigrid || solver.cross_check ||
         discretization->finest_level() == 0)
       return true;
-    // (ProblemChecks::check_definiteness(): on the finest level if it has
-    // at most the check's DoFs)
-    const bool checked_here =
-      solver.definiteness_max_dofs > 0 &&
-      discretization->level(discretization->finest_level()).n_dofs <= solver.definiteness_max_dofs;
+    // (the definiteness check may factorize the finest level)
+    const bool checked_here = ProblemChecks<dim>::definiteness_level(*discretization, solver) ==
+                              static_cast<int>(discretization->finest_level());
     return checked_here && !after_setup;
   }
 

@@ -163,12 +163,7 @@ namespace FoslsContact
       return 0;
     TimerOutput::Scope t(timer, "Definiteness check");
     Timer              wall;
-    // The finest level small enough; indefinite there means indefinite on
-    // all finer levels, as the spaces are nested.
-    int level = discretization.finest_level();
-    while (level >= 0 &&
-           discretization.level(level).n_dofs > parameters.solver.definiteness_max_dofs)
-      --level;
+    const int          level = definiteness_level(discretization, parameters.solver);
     if (level < 0)
       {
         pcout << "Definiteness check skipped: even level 1 has more than "
@@ -231,6 +226,22 @@ namespace FoslsContact
     if (passed && uniform)
       passed->insert(level);
     return seconds;
+  }
+
+
+  template <int dim>
+  int
+  ProblemChecks<dim>::definiteness_level(const Discretization<dim> &discretization,
+                                         const Parameters::Solver & solver)
+  {
+    if (solver.definiteness_max_dofs == 0)
+      return -1;
+    // The finest level small enough; indefinite there means indefinite on
+    // all finer levels, as the spaces are nested.
+    int level = discretization.finest_level();
+    while (level >= 0 && discretization.level(level).n_dofs > solver.definiteness_max_dofs)
+      --level;
+    return level;
   }
 
 

@@ -56,6 +56,14 @@ namespace FoslsContact
     double check_definiteness(TimerOutput &timer, std::set<unsigned int> *passed = nullptr) const;
 
     /**
+     * The level check_definiteness() factorizes when it runs: the finest
+     * with at most @p solver's Definiteness check max dofs DoFs; -1 if
+     * none has so few or the check is switched off (0).
+     */
+    static int definiteness_level(const Discretization<dim> &discretization,
+                                  const Parameters::Solver & solver);
+
+    /**
      * The relative margin on C_compl of a check on a coarser level than
      * the finest. bench/definiteness_limit.py bisects the largest definite
      * C_compl level by level: it goes down under refinement by a share that

@@ -199,19 +199,48 @@ namespace FoslsContact
 
     // Which DoF is which: the base element (0 = Q1^d, 1 = RT0^d), its copy
     // (displacement component or stress row) and the vertex or face, for
-    // the cells with DoFs here (owned and ghost).
+    // the cells with DoFs here (owned and ghost). A cell holds all DoFs of
+    // its vertices and faces; the first cell at one enters it.
+    using Entry = typename LevelData<dim>::DofsAt::value_type;
+    typename LevelData<dim>::DofsAt::sequence_type vertices, faces;
+    std::vector<bool> vertex_entered(triangulation.n_vertices(), false);
+    std::vector<bool> face_entered(triangulation.n_raw_faces(), false);
     std::vector<types::global_dof_index> dofs;
+    std::array<Entry, GeometryInfo<dim>::vertices_per_cell> cell_vertices;
+    std::array<Entry, GeometryInfo<dim>::faces_per_cell>    cell_faces;
     data.for_each_cell(dof_handler, [&](const auto &cell) {
       data.get_local_dofs(cell, dofs);
+      for (const unsigned int v : cell->vertex_indices())
+        cell_vertices[v].first = cell->vertex_index(v);
+      for (const unsigned int f : cell->face_indices())
+        cell_faces[f].first = cell->face(f)->index();
       for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
         {
           const auto base = fe.system_to_base_index(i);
           if (base.first.first == 0)
-            data.vertex_dofs[cell->vertex_index(base.second)][base.first.second] = dofs[i];
+            cell_vertices[base.second].second[base.first.second] = dofs[i];
           else
-            data.face_dofs[cell->face(base.second)->index()][base.first.second] = dofs[i];
+            cell_faces[base.second].second[base.first.second] = dofs[i];
         }
+      for (const auto &entry : cell_vertices)
+        if (!vertex_entered[entry.first])
+          {
+            vertex_entered[entry.first] = true;
+            vertices.push_back(entry);
+          }
+      for (const auto &entry : cell_faces)
+        if (!face_entered[entry.first])
+          {
+            face_entered[entry.first] = true;
+            faces.push_back(entry);
+          }
     });
+    for (auto *const entries : {&vertices, &faces})
+      std::sort(entries->begin(), entries->end(), [](const Entry &a, const Entry &b) {
+        return a.first < b.first;
+      });
+    data.vertex_dofs.adopt_sequence(boost::container::ordered_unique_range, std::move(vertices));
+    data.face_dofs.adopt_sequence(boost::container::ordered_unique_range, std::move(faces));
   }
 
 
@@ -235,17 +264,19 @@ namespace FoslsContact
         for (const unsigned int v : cell->vertex_indices())
           owned_vertex[cell->vertex_index(v)] = true;
     });
+    const PatchDofsInCell<dim>           patch_dofs = patch_dofs_in_cell(fe);
+    std::vector<types::global_dof_index> columns;
     data.for_each_cell(dof_handler, [&](const auto &cell) {
+      data.get_local_dofs(cell, columns);
       for (const unsigned int v : cell->vertex_indices())
         if (owned_vertex[cell->vertex_index(v)])
-          for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) { held[dof] = true; });
+          for_patch_dofs_in_cell(patch_dofs, columns, v, [&](const auto dof) { held[dof] = true; });
     });
     {
       // a cell couples its DoFs, and, with hanging nodes eliminated, the
       // masters of its constrained DoFs (C^T A C), which may lie on the
       // coarse neighbour
-      std::vector<types::global_dof_index> columns;
-      DynamicSparsityPattern               dsp(n_local, n_local);
+      DynamicSparsityPattern dsp(n_local, n_local);
       data.for_each_cell(dof_handler, [&](const auto &cell) {
         // a row takes the cell's columns at once, sorted (one merge
         // instead of a search per entry)
@@ -357,7 +388,9 @@ namespace FoslsContact
       {
         bytes += data.sparsity.memory_consumption() + data.role.capacity() * sizeof(DoFRole) +
                  data.fixed_values.memory_consumption() + data.upper_bounds.memory_consumption() +
-                 memory_consumption(data.rotation_of_dof);
+                 memory_consumption(data.rotation_of_dof) +
+                 (data.vertex_dofs.capacity() + data.face_dofs.capacity()) *
+                   sizeof(typename LevelData<dim>::DofsAt::value_type);
         for (const RotationBlock<dim> &block : data.rotations)
           bytes += sizeof(block) + block.matrix.memory_consumption() +
                    block.inverse.memory_consumption();

@@ -101,7 +101,8 @@ namespace FoslsContact
   {
     std::vector<std::pair<std::string, std::size_t>> memory = {
       {"mesh and DoF handler", discretization.mesh_memory_consumption()},
-      {"level data (coupling patterns, roles, bounds)", discretization.level_memory_consumption()},
+      {"level data (coupling patterns, DoF tables, roles, bounds)",
+       discretization.level_memory_consumption()},
       {"prolongations of the uniform levels", transfer_bytes},
       {"assembled problem (A, parts of J, vectors)", qp.memory_consumption()}};
     const SolverStatistics statistics = solver.statistics();

@@ -157,6 +157,7 @@ namespace FoslsContact
     // constructor as holes in the heap
     std::vector<std::pair<VertexKey<dim>, unsigned int>> order;
     std::vector<std::size_t>                             start(n_vertices + 1, 0);
+    const PatchDofsInCell<dim> in_cell = patch_dofs_in_cell(dof_handler.get_fe());
     data.for_each_cell(dof_handler, [&](const auto &cell) {
       for (const unsigned int v : cell->vertex_indices())
         {
@@ -167,20 +168,22 @@ namespace FoslsContact
               order.emplace_back(vertex_key<dim>(cell, v), vertex);
             }
           if (owned[vertex] && relaxed[vertex])
-            for_patch_dofs_in_cell(data, cell, v, [&](const auto) { ++start[vertex + 1]; });
+            start[vertex + 1] += in_cell[v].size();
         }
     });
     for (unsigned int vertex = 0; vertex < n_vertices; ++vertex)
       start[vertex + 1] += start[vertex];
     std::vector<types::global_dof_index> gathered(start.back());
+    std::vector<types::global_dof_index> dofs;
     {
       std::vector<std::size_t> next(start.begin(), start.end() - 1);
       data.for_each_cell(dof_handler, [&](const auto &cell) {
+        data.get_local_dofs(cell, dofs);
         for (const unsigned int v : cell->vertex_indices())
           {
             const unsigned int vertex = cell->vertex_index(v);
             if (owned[vertex] && relaxed[vertex])
-              for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) {
+              for_patch_dofs_in_cell(in_cell, dofs, v, [&](const auto dof) {
                 gathered[next[vertex]++] = dof;
               });
           }
@@ -208,15 +211,15 @@ namespace FoslsContact
         master_vertices[master.first];
     if (!master_vertices.empty())
       data.for_each_cell(dof_handler, [&](const auto &cell) {
+        data.get_local_dofs(cell, dofs);
         for (const unsigned int v : cell->vertex_indices())
-          for_patch_dofs_in_cell(data, cell, v, [&](const auto dof) {
+          for_patch_dofs_in_cell(in_cell, dofs, v, [&](const auto dof) {
             const auto m = master_vertices.find(dof);
             if (m != master_vertices.end())
               m->second.insert(cell->vertex_index(v));
           });
       });
     std::vector<std::vector<unsigned int>> coupled(order.size());
-    std::vector<types::global_dof_index>   dofs;
     std::vector<unsigned int>              vertices;
     data.for_each_cell(dof_handler, [&](const auto &cell) {
       vertices.clear();

@@ -125,7 +125,7 @@ check([p["phase"] for p in phases] == ["Setup: mesh, DoFs, levels", "Assembly",
       "SI square: memory_by_phase has the resident memory after each phase up to the solve, "
       "its peaks growing up to peak_rss_mb")
 memory = square["memory_mb"]
-check(set(memory) >= {"mesh and DoF handler", "level data (coupling patterns, roles, bounds)",
+check(set(memory) >= {"mesh and DoF handler", "level data (coupling patterns, DoF tables, roles, bounds)",
                       "prolongations of the uniform levels",
                       "assembled problem (A, parts of J, vectors)", "multigrid: patch smoothers",
                       "multigrid: Galerkin products (index arrays)"}
@@ -135,7 +135,7 @@ check(set(memory) >= {"mesh and DoF handler", "level data (coupling patterns, ro
       "peak_rss_mb")
 # the multigrid solve frees the finest level's coupling pattern; the cross
 # check's active set method factorizes on it, so that run keeps it
-level_data = "level data (coupling patterns, roles, bounds)"
+level_data = "level data (coupling patterns, DoF tables, roles, bounds)"
 kept = R.run("prm/square.prm", si + ["Solver/Cross check=true"], name="square_si_cross_check")
 check(memory[level_data] < 0.75 * kept["memory_mb"][level_data]
       and kept["functional"] == square["functional"],

@@ -147,8 +147,9 @@ namespace FoslsContact
     /** The bytes of the mesh (with p4est's forest) and the DoF handler. */
     std::size_t mesh_memory_consumption() const;
     /**
-     * The bytes of the level data: the coupling patterns, roles, fixed
-     * values, bounds and rotations of every level.
+     * The bytes of the level data: the coupling patterns, the tables of
+     * the DoFs at vertices and faces, roles, fixed values, bounds and
+     * rotations of every level.
      */
     std::size_t level_memory_consumption() const;
 

@@ -4,7 +4,8 @@
 #include <deal.II/base/mpi.templates.h>
 #include <deal.II/base/parallel.h>
 #include <deal.II/base/thread_local_storage.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <fosls_contact/qp/product_pattern.h>
 
 #include <map>
 #include <algorithm>
@@ -28,20 +29,18 @@ namespace FoslsContact
 
     // the pattern of A P on the owned rows of A, for the room of each row
     // in compute() and the columns below; not kept
-    DynamicSparsityPattern product_pattern(n_owned, n_coarse_local);
-    for (unsigned int r = 0; r < n_owned; ++r)
-      for (auto a = fine_pattern.begin(r); a != fine_pattern.end(r); ++a)
-        for (auto p = pattern.begin(a->column()); p != pattern.end(a->column()); ++p)
-          product_pattern.add(r, p->column());
+    const ProductPattern product(fine_pattern, pattern, n_owned);
     product_row_length.resize(n_owned);
     for (unsigned int r = 0; r < n_owned; ++r)
-      product_row_length[r] = product_pattern.row_length(r);
+      product_row_length[r] = product.row_length(r);
     // the columns of P^T (A P) in coarse row j: those of the rows of A P
     // at column j of P
     auto for_each_column = [&](const unsigned int j, const auto &f) {
       for (std::size_t k = transpose_start[j]; k < transpose_start[j + 1]; ++k)
-        for (unsigned int q = 0; q < product_row_length[transpose_row[k]]; ++q)
-          f(product_pattern.column_number(transpose_row[k], q));
+        for (std::size_t q = product.start[transpose_row[k]];
+             q < product.start[transpose_row[k] + 1];
+             ++q)
+          f(product.columns[q]);
     };
 
     // the columns of each owned coarse row outside the result's pattern

@@ -1,7 +1,8 @@
 #include <deal.II/base/memory_consumption.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_pattern.h>
 
 #include <fosls_contact/qp/matrix_list_memory.h>
+#include <fosls_contact/qp/product_pattern.h>
 #include <fosls_contact/solvers/multilevel_hierarchy.h>
 
 namespace FoslsContact
@@ -16,15 +17,17 @@ namespace FoslsContact
                     SparsityPattern &     sparsity,
                     SparseMatrix<double> &R)
     {
-      const unsigned int     n = level.n_local();
-      DynamicSparsityPattern dsp(n, n);
-      for (unsigned int i = 0; i < n; ++i)
-        dsp.add(i, i);
+      // (the identity but for the blocks: rows of one or dim entries)
+      const unsigned int        n = level.n_local();
+      std::vector<unsigned int> row_lengths(n, 1);
       for (const auto &block : level.rotations)
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int b = 0; b < dim; ++b)
-            dsp.add(block.dofs[a], block.dofs[b]);
-      sparsity.copy_from(dsp);
+        for (const auto dof : block.dofs)
+          row_lengths[dof] = dim;
+      sparsity.reinit(n, n, row_lengths);
+      for (const auto &block : level.rotations)
+        for (const auto dof : block.dofs)
+          sparsity.add_entries(dof, block.dofs.begin(), block.dofs.end());
+      sparsity.compress();
       R.reinit(sparsity);
       for (unsigned int i = 0; i < n; ++i)
         if (level.rotation_of_dof[i] == numbers::invalid_unsigned_int)
@@ -105,15 +108,14 @@ namespace FoslsContact
     SparseMatrix<double> R_coarse, R_fine_inverse, tmp;
     rotation_matrix(level(l - 1), false, sp_c, R_coarse);
     rotation_matrix(level(l), true, sp_f, R_fine_inverse);
-    sp_tmp.reinit(0, 0, 0);
-    sp_tmp.compress();
+    const SparseMatrix<double> &P = *sources[l].prolongation;
+    ProductPattern(P.get_sparsity_pattern(), sp_c, P.m()).fill(sp_tmp, P.n());
     tmp.reinit(sp_tmp);
-    sources[l].prolongation->mmult(tmp, R_coarse);
+    P.mmult(tmp, R_coarse, Vector<double>(), false);
     rotated_sparsity[l] = std::make_unique<SparsityPattern>();
-    rotated_sparsity[l]->reinit(0, 0, 0);
-    rotated_sparsity[l]->compress();
+    ProductPattern(sp_f, sp_tmp, sp_f.n_rows()).fill(*rotated_sparsity[l], sp_tmp.n_cols());
     rotated[l] = std::make_unique<SparseMatrix<double>>(*rotated_sparsity[l]);
-    R_fine_inverse.mmult(*rotated[l], tmp);
+    R_fine_inverse.mmult(*rotated[l], tmp, Vector<double>(), false);
   }
 
 

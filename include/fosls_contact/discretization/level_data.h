@@ -221,9 +221,9 @@ namespace FoslsContact
    * lie in the cell (see patch_dofs_in_cell()); @p cell_dofs are the
    * cell's DoFs (LevelData::get_local_dofs()).
    */
-  template <typename PatchDofsInCell, typename Function>
+  template <typename Table, typename Function>
   void
-  for_patch_dofs_in_cell(const PatchDofsInCell &                     table,
+  for_patch_dofs_in_cell(const Table &                               table,
                          const std::vector<types::global_dof_index> &cell_dofs,
                          const unsigned int                          v,
                          const Function &                            f)

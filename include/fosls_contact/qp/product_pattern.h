@@ -33,7 +33,7 @@ namespace FoslsContact
     }
 
     /**
-     * Make @p pattern the product's (all rows of A; compressed). A square
+     * Make @p pattern the product's rows built here, compressed. A square
      * SparsityPattern also keeps the diagonal, as SparseMatrix::mmult()'s
      * own does.
      */

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <numeric>
 
 namespace FoslsContact
 {
@@ -195,6 +196,16 @@ namespace FoslsContact
       Vector<double>                       r_eq, r_compl, r_total;
       /** local indices */
       std::vector<types::global_dof_index> dofs;
+      /**
+       * dofs sorted, and the position in dofs of each: the copier adds a
+       * row's entries in the order of the global rows' columns, one merge
+       * instead of a search per entry (each entry of the global matrix
+       * still gets one sum per cell, in the order of the cells)
+       */
+      std::vector<types::global_dof_index> sorted_dofs;
+      std::vector<unsigned int>            order;
+      /** a row of a matrix in the order of sorted_dofs (the copier's) */
+      mutable std::vector<double>          sorted_row;
       double                               constant_eq     = 0;
       /** the cell is owned (its constant counts here) */
       bool                                 owned           = false;
@@ -231,19 +242,25 @@ namespace FoslsContact
         const double JxW = fe_values.JxW(q);
         for (unsigned int i = 0; i < n; ++i)
           {
-            Tensor<2, dim> sigma;
+            // A sigma_i - eps(u_i) has one half zero: a stress function's
+            // eps is zero, a displacement function's sigma (and A sigma:
+            // compliance() of a zero tensor is +0) too. The half that is
+            // not evaluated is the +0 tensor, whose subtraction left the
+            // other half as it was, bit for bit.
             divergence[i] = Tensor<1, dim>();
             if (stress_row[i] >= 0)
               {
+                Tensor<2, dim>                   sigma;
                 const unsigned int               m = stress_row[i];
                 const FEValuesExtractors::Vector row(dim + m * dim);
                 const Tensor<1, dim>             r = fe_values[row].value(i, q);
                 for (unsigned int k = 0; k < dim; ++k)
                   sigma[m][k] = r[k];
                 divergence[i][m] = fe_values[row].divergence(i, q);
+                residual[i]      = compliance(sigma, material.mu, material.lambda);
               }
-            const Tensor<2, dim> eps = fe_values[displacement].symmetric_gradient(i, q);
-            residual[i]              = compliance(sigma, material.mu, material.lambda) - eps;
+            else
+              residual[i] = Tensor<2, dim>() - fe_values[displacement].symmetric_gradient(i, q);
           }
         // div sigma_i . div sigma_j is a single product for two functions
         // of one stress row and an exact zero otherwise (which, added, left
@@ -484,6 +501,15 @@ namespace FoslsContact
           copy.k_eq *= 2.;
           if (copy.touches_contact)
             copy.k_compl *= 2.;
+          const unsigned int n_kept = copy.dofs.size();
+          copy.order.resize(n_kept);
+          std::iota(copy.order.begin(), copy.order.end(), 0u);
+          std::sort(copy.order.begin(), copy.order.end(), [&](const auto a, const auto b) {
+            return copy.dofs[a] < copy.dofs[b];
+          });
+          copy.sorted_dofs.resize(n_kept);
+          for (unsigned int k = 0; k < n_kept; ++k)
+            copy.sorted_dofs[k] = copy.dofs[copy.order[k]];
           copy.valid = true;
         });
     };
@@ -496,17 +522,28 @@ namespace FoslsContact
         return;
       const auto &       dofs = copy.dofs;
       const unsigned int n    = dofs.size();
+      auto &             row  = copy.sorted_row;
+      row.resize(n);
+      // row i of @p k into @p matrix, its columns sorted
+      const auto add_row = [&](SparseMatrix<double> &    matrix,
+                               const FullMatrix<double> &k,
+                               const unsigned int        i,
+                               const bool                elide_zeros) {
+        for (unsigned int j = 0; j < n; ++j)
+          row[j] = k(i, copy.order[j]);
+        matrix.add(dofs[i], n, copy.sorted_dofs.data(), row.data(), elide_zeros, true);
+      };
       for (unsigned int i = 0; i < n; ++i)
         if (dofs[i] < n_owned)
           {
             // (k_eq is an exact zero outside its pattern: part_patterns())
-            qp.matrix_eq.add(dofs[i], n, dofs.data(), &copy.k_eq(i, 0), true);
-            qp.matrix.add(dofs[i], n, dofs.data(), &copy.k_total(i, 0), false);
+            add_row(qp.matrix_eq, copy.k_eq, i, true);
+            add_row(qp.matrix, copy.k_total, i, false);
             qp.rhs.local_element(dofs[i]) += copy.r_total(i);
             qp.rhs_eq.local_element(dofs[i]) += 2. * copy.r_eq(i);
             if (copy.touches_contact)
               {
-                qp.matrix_compl.add(dofs[i], n, dofs.data(), &copy.k_compl(i, 0), false);
+                add_row(qp.matrix_compl, copy.k_compl, i, false);
                 qp.rhs_compl.local_element(dofs[i]) += 2. * copy.r_compl(i);
               }
           }

@@ -4,12 +4,12 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <fosls_contact/assembly/constitutive_products.h>
 #include <fosls_contact/assembly/fosls_assembler.h>
 #include <fosls_contact/assembly/worker_exceptions.h>
 #include <fosls_contact/discretization/hanging_nodes.h>
 
 #include <algorithm>
-#include <cstring>
 #include <numeric>
 
 namespace FoslsContact
@@ -45,76 +45,6 @@ namespace FoslsContact
   }
 
 
-  /**
-   * The term C_const (r_i : r_j) JxW of one quadrature point for the pairs
-   * of DoFs j <= i, four j at a time. It is most of the assembly's time:
-   * n^2 / 2 products of dim x dim tensors at every quadrature point (n = 42
-   * and 27 points in 3D). GCC's vector types give the packs; the program
-   * is built for x86-64 in general (SSE2: two doubles an instruction), and
-   * target_clones adds an AVX2 version (four) that runs where the
-   * processor has it. Each lane does what scalar_product(r_i, r_j) does,
-   * in its order (a row's products summed from the first column, then the
-   * rows' sums from the first row), then multiplies by C_const and then by
-   * JxW as the term always did, so every entry has the same bits as one j
-   * at a time, in either version: neither target has FMA, so no product
-   * is fused into its sum.
-   */
-  struct ConstPacks
-  {
-    static constexpr unsigned int width = 4;
-    typedef double Pack __attribute__((vector_size(width * sizeof(double))));
-
-    static Pack
-    load(const double *p)
-    {
-      Pack v;
-      std::memcpy(&v, p, sizeof(v));
-      return v;
-    }
-  };
-
-
-  /**
-   * K(i, j) += c (r_i : r_j) JxW for j <= i (ConstPacks), r_i =
-   * @p residual[i]. @p components is the scratch of the residuals by
-   * component (AssemblyScratch).
-   */
-  template <int dim>
-  __attribute__((target_clones("avx2", "default"))) void
-  add_const_products(const std::vector<Tensor<2, dim>> &residual,
-                     const double                       c,
-                     const double                       JxW,
-                     std::vector<double> &              components,
-                     FullMatrix<double> &               K)
-  {
-    const unsigned int n      = residual.size();
-    const unsigned int stride = components.size() / (dim * dim);
-    for (unsigned int j = 0; j < n; ++j)
-      for (unsigned int a = 0; a < dim; ++a)
-        for (unsigned int b = 0; b < dim; ++b)
-          components[(a * dim + b) * stride + j] = residual[j][a][b];
-    using Pack = ConstPacks::Pack;
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const Tensor<2, dim> &r_i = residual[i];
-        for (unsigned int j = 0; j <= i; j += ConstPacks::width)
-          {
-            Pack sum;
-            for (unsigned int a = 0; a < dim; ++a)
-              {
-                Pack row = ConstPacks::load(&components[(a * dim) * stride + j]) * r_i[a][0];
-                for (unsigned int b = 1; b < dim; ++b)
-                  row += ConstPacks::load(&components[(a * dim + b) * stride + j]) * r_i[a][b];
-                sum = a == 0 ? row : sum + row;
-              }
-            const Pack term = c * sum * JxW;
-            for (unsigned int k = 0; k < ConstPacks::width && j + k <= i; ++k)
-              K(i, j + k) += term[k];
-          }
-      }
-  }
-
-
   /** Per-thread evaluators and work arrays of the cell loop. */
   template <int dim>
   struct AssemblyScratch
@@ -134,7 +64,6 @@ namespace FoslsContact
                   update_values | update_normal_vectors |
                     update_quadrature_points | update_JxW_values)
         , residual(fe.n_dofs_per_cell())
-        , residual_components(dim * dim * padded(fe.n_dofs_per_cell()), 0.)
         , divergence(fe.n_dofs_per_cell())
         , un(fe.n_dofs_per_cell())
         , sn(fe.n_dofs_per_cell())
@@ -151,7 +80,6 @@ namespace FoslsContact
                   other.fe_face.get_quadrature(),
                   other.fe_face.get_update_flags())
         , residual(other.residual.size())
-        , residual_components(other.residual_components.size(), 0.)
         , divergence(other.divergence.size())
         , un(other.un.size())
         , sn(other.sn.size())
@@ -160,18 +88,8 @@ namespace FoslsContact
 
       FEValues<dim>               fe_values;
       FEFaceValues<dim>           fe_face;
-      /** the DoFs rounded up to whole packs (ConstPacks) */
-      static unsigned int
-      padded(const unsigned int n)
-      {
-        return (n + ConstPacks::width - 1) / ConstPacks::width * ConstPacks::width;
-      }
-
       std::vector<Tensor<2, dim>> residual; // A sigma_i - eps(u_i)
-      /**
-       * The same by component: component c of DoF j's at c * padded(n) + j
-       * (zero for the padding)
-       */
+      /** scratch of add_constitutive_products() */
       std::vector<double>         residual_components;
       std::vector<Tensor<1, dim>> divergence;
       std::vector<double>         un, sn;
@@ -273,7 +191,8 @@ namespace FoslsContact
                   const unsigned int m = stress_row[i];
                   k_eq(i, j) += weights.c_eq * (divergence[i][m] * divergence[j][m]) * JxW;
                 }
-        add_const_products(residual, weights.c_const, JxW, scratch.residual_components, k_const);
+        add_constitutive_products(
+          residual.data(), n, weights.c_const, JxW, scratch.residual_components, k_const);
         if (scene.has_body_force())
           {
             scene.body_force().vector_value(fe_values.quadrature_point(q), scratch.f);

@@ -122,8 +122,6 @@ namespace FoslsContact
        */
       std::vector<types::global_dof_index> sorted_dofs;
       std::vector<unsigned int>            order;
-      /** a row of a matrix in the order of sorted_dofs (the copier's) */
-      mutable std::vector<double>          sorted_row;
       double                               constant_eq     = 0;
       /** the cell is owned (its constant counts here) */
       bool                                 owned           = false;
@@ -435,13 +433,13 @@ namespace FoslsContact
     // Only the owned rows are summed here; every cell at an owned DoF is
     // here (owned or ghost), so they are complete. The ghost rows the
     // patches need come from their owners (compress_matrices()).
-    const unsigned int n_owned = data.n_owned();
+    const unsigned int  n_owned = data.n_owned();
+    std::vector<double> row; // (the copier's: a row of a cell's matrix, by sorted column)
     auto copier = [&](const AssemblyCopy &copy) {
       if (!copy.valid)
         return;
       const auto &       dofs = copy.dofs;
       const unsigned int n    = dofs.size();
-      auto &             row  = copy.sorted_row;
       row.resize(n);
       // row i of @p k into @p matrix, its columns sorted
       const auto add_row = [&](SparseMatrix<double> &    matrix,

@@ -11,6 +11,19 @@ namespace FoslsContact
   using namespace dealii;
 
   /**
+   * Which compiled version of the loop add_constitutive_products() runs:
+   * the processor's (AVX2 where it has it, chosen when the program starts),
+   * or one by name, for tests/unit/constitutive_products, which runs both
+   * (avx2 only where processor_has_avx2()).
+   */
+  enum class ProductsVersion
+  {
+    processor,
+    sse2,
+    avx2
+  };
+
+  /**
    * The constitutive term of one quadrature point of a cell,
    * K(i, j) += c (r_i : r_j) JxW for the DoFs j <= i < @p n, where r_i =
    * @p residual[i] = A sigma_i - eps(u_i). It is most of the assembly's
@@ -29,21 +42,9 @@ namespace FoslsContact
    * into its sum (no FMA). tests/unit/constitutive_products checks both
    * versions against that loop bit for bit.
    *
-   * @p components is scratch space, resized here.
+   * @p components is scratch space, resized here. @p version: which of
+   * the compiled versions runs.
    */
-  /**
-   * Which compiled version of the loop add_constitutive_products() runs:
-   * the processor's (AVX2 where it has it, chosen when the program starts),
-   * or one by name, for tests/unit/constitutive_products, which runs both
-   * (avx2 only where processor_has_avx2()).
-   */
-  enum class ProductsVersion
-  {
-    processor,
-    sse2,
-    avx2
-  };
-
   template <int dim>
   void
   add_constitutive_products(const Tensor<2, dim> *residual,

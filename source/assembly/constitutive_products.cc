@@ -2,13 +2,12 @@
 
 #include <cstring>
 
-// On x86-64 the loop is compiled for SSE2 and AVX2; elsewhere once.
+// On x86-64 the loop is compiled for SSE2 and for AVX2; elsewhere twice the
+// same.
 #if defined(__x86_64__)
 #  define FOSLS_CONTACT_TARGET_AVX2 __attribute__((target("avx2")))
-#  define FOSLS_CONTACT_TARGET_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #  define FOSLS_CONTACT_TARGET_AVX2
-#  define FOSLS_CONTACT_TARGET_CLONES
 #endif
 
 namespace FoslsContact
@@ -95,20 +94,6 @@ namespace FoslsContact
     {
       constitutive_products<dim>(residual, n, c, JxW, components, K);
     }
-
-
-    /** The loop for both, the processor's chosen when the program starts. */
-    template <int dim>
-    FOSLS_CONTACT_TARGET_CLONES void
-    products_processor(const Tensor<2, dim> *residual,
-                       const unsigned int    n,
-                       const double          c,
-                       const double          JxW,
-                       std::vector<double> & components,
-                       FullMatrix<double> &  K)
-    {
-      constitutive_products<dim>(residual, n, c, JxW, components, K);
-    }
   } // namespace
 
 
@@ -143,7 +128,10 @@ namespace FoslsContact
           products_avx2<dim>(residual, n, c, JxW, components, K);
           break;
         default:
-          products_processor<dim>(residual, n, c, JxW, components, K);
+          if (processor_has_avx2())
+            products_avx2<dim>(residual, n, c, JxW, components, K);
+          else
+            products_sse2<dim>(residual, n, c, JxW, components, K);
       }
   }
 

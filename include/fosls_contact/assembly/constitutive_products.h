@@ -12,9 +12,9 @@ namespace FoslsContact
 
   /**
    * Which compiled version of the loop add_constitutive_products() runs:
-   * the processor's (AVX2 where it has it, chosen when the program starts),
-   * or one by name, for tests/unit/constitutive_products, which runs both
-   * (avx2 only where processor_has_avx2()).
+   * the processor's (AVX2 where processor_has_avx2(), else SSE2), or one
+   * by name, for tests/unit/constitutive_products, which runs both (avx2
+   * only where processor_has_avx2()).
    */
   enum class ProductsVersion
   {
@@ -33,7 +33,7 @@ namespace FoslsContact
    * The pairs go four j at a time (GCC's vector types). The program is
    * built for x86-64 in general, whose SSE2 takes two doubles an
    * instruction; the loop is compiled a second time for AVX2 (four), which
-   * runs where the processor has it (target_clones). Each lane does what
+   * runs where the processor has it. Each lane does what
    * scalar_product(r_i, r_j) does, in its order (a row's products summed
    * from the first column, then the rows' sums from the first row), then
    * multiplies by c and then by JxW, as `K(i, j) += c *

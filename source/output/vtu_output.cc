@@ -1,5 +1,6 @@
 #include <deal.II/numerics/data_out.h>
 
+#include <fosls_contact/output/active_fields_buffer.h>
 #include <fosls_contact/output/contact_surface.h>
 #include <fosls_contact/output/contact_table.h>
 #include <fosls_contact/output/stress_fields.h>
@@ -8,7 +9,6 @@
 #include <algorithm>
 #include <map>
 #include <sstream>
-#include <streambuf>
 
 namespace FoslsContact
 {
@@ -29,76 +29,6 @@ namespace FoslsContact
         text.replace(at, tag.size(), "<PPointData " + active + ">");
       return text;
     }
-
-
-    /**
-     * with_active_fields() for a VTU piece on its way into its file: the
-     * characters written to this buffer go on to @p sink, the first
-     * <PointData Scalars="scalars"> replaced by the element naming the
-     * @p active fields. A piece is written straight into its file this way
-     * instead of being held whole as text and copied (the tag comes after
-     * the points and cells): the text of the cube's level 7 is 110 MB.
-     * Only the last characters that may begin the tag are held back.
-     */
-    class ActiveFieldsBuffer : public std::streambuf
-    {
-    public:
-      ActiveFieldsBuffer(std::ostream &sink, const std::string &active)
-        : sink(sink)
-        , replacement("<PointData " + active + ">")
-      {}
-
-      /** Pass on what is held back (at the end of the piece). */
-      void finish()
-      {
-        sink.write(held.data(), held.size());
-        held.clear();
-      }
-
-    protected:
-      std::streamsize xsputn(const char *s, const std::streamsize n) override
-      {
-        if (replaced)
-          sink.write(s, n);
-        else
-          {
-            held.append(s, n);
-            const auto at = held.find(tag);
-            if (at != std::string::npos)
-              {
-                sink.write(held.data(), at);
-                sink << replacement;
-                sink.write(held.data() + at + tag.size(), held.size() - at - tag.size());
-                held.clear();
-                replaced = true;
-              }
-            else if (held.size() >= tag.size())
-              {
-                // (the tag may begin in the last tag.size() - 1 characters)
-                const std::size_t passed = held.size() - (tag.size() - 1);
-                sink.write(held.data(), passed);
-                held.erase(0, passed);
-              }
-          }
-        // (a failed sink fails this stream, and deal.II's writer throws)
-        return sink ? n : 0;
-      }
-
-      int_type overflow(const int_type c) override
-      {
-        if (traits_type::eq_int_type(c, traits_type::eof()))
-          return traits_type::not_eof(c);
-        const char character = traits_type::to_char_type(c);
-        return xsputn(&character, 1) == 1 ? c : traits_type::eof();
-      }
-
-    private:
-      inline static const std::string tag = "<PointData Scalars=\"scalars\">";
-      std::ostream &                  sink;
-      const std::string               replacement;
-      std::string                     held;
-      bool                            replaced = false;
-    };
   } // namespace
 
 

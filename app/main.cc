@@ -61,10 +61,16 @@ main(int argc, char *argv[])
   const bool launched = std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK") ||
                         std::getenv("PMI_RANK") || std::getenv("PMI_SIZE") ||
                         std::getenv("PMI_FD") || std::getenv("SLURM_STEP_NUM_TASKS");
+  // Isolated singletons all name their session directory the same
+  // (/tmp/ompi.<host>.<uid>/jf.0/1): one process's clean-up in MPI_Finalize
+  // removed it while another's MPI_Init created it, which then failed ("A
+  // call to mkdir was unable to create the desired directory"; 1 of 160
+  // runs, four at a time). A process without peers needs none (0 of 320).
   if (!launched)
     {
       setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
       setenv("OMPI_MCA_pml", "ob1", 0);
+      setenv("OMPI_MCA_orte_create_session_dirs", "0", 0);
     }
   // threads: as many as cores (or DEAL_II_NUM_THREADS) until the scene's
   // Solver/Threads says otherwise

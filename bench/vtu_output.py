@@ -5,8 +5,9 @@ default; bench/scale.py writes none, and summary.json's peak_rss_mb is read
 as the output begins), for the square at level 9 and the cube at level 6,
 one process with all its threads; with --base-rev the same for another
 revision (built as bench/scale.py builds it), run alternately with this
-build, and the ratios. The peak is the kernel's high-water mark of the
-process (wait4's ru_maxrss), in MB of 2^20 bytes as in summary.json.
+build, and the ratio of their lowest peaks. The peak is the kernel's
+high-water mark of the process (wait4's ru_maxrss), in MB of 2^20 bytes as
+in summary.json.
 
     bench/vtu_output.py --base-rev ff2869a --runs 2
 """
@@ -40,11 +41,11 @@ def run(binary, scene, level, out):
         process = subprocess.Popen(cmd, stdout=screen, stderr=subprocess.STDOUT, env=env)
         _, status, usage = os.wait4(process.pid, 0)
     wall = time.time() - start
-    process.returncode = os.waitstatus_to_exitcode(status)
+    code = os.waitstatus_to_exitcode(status)
     with open(log) as f:
         text = f.read()
-    if process.returncode != 0:
-        sys.exit(f"failed ({process.returncode}): {' '.join(cmd)}\n{text}")
+    if code != 0:
+        sys.exit(f"failed ({code}): {' '.join(cmd)}\n{text}")
     output = re.search(r"^Output \.\.\. ([0-9.]+) s", text, re.M)
     return {"wall": wall, "output": float(output.group(1)) if output else float("nan"),
             "peak": usage.ru_maxrss / 1024.}
@@ -69,7 +70,7 @@ def main():
             shift = k % len(names)
             for name in names[shift:] + names[:shift]:
                 results[name].append(run(binaries[name], scene, level,
-                                              os.path.join(RES, f"{tag}_{name}")))
+                                         os.path.join(RES, f"{tag}_{name}")))
         for name in names:
             r = results[name]
             span = lambda key, f: f"{f % min(x[key] for x in r)}-{f % max(x[key] for x in r)}"

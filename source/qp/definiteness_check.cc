@@ -1,5 +1,6 @@
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
-#include <fosls_contact/qp/sparse_direct_solver.h>
+#include <fosls_contact/qp/sparse_cholesky.h>
 
 #include <fosls_contact/qp/definiteness_check.h>
 
@@ -50,15 +51,19 @@ namespace FoslsContact
       for (auto e = M.begin(i); e != M.end(i); ++e)
         if (qp.role[i] != DoFRole::free || qp.role[e->column()] != DoFRole::free)
           e->value() = (i == e->column()) ? 1. : 0.;
-    SparseDirectSolver direct;
-    direct.initialize(M, qp.partitioner, qp.coupling_sparsity);
+    SparseCholesky cholesky;
+    AssertThrow(cholesky.factorize(M, qp.coupling_sparsity),
+                ExcMessage("the functional's matrix without its contact DoFs is not positive "
+                           "definite in floating point (its Cholesky factorization failed); "
+                           "the functional is too badly conditioned for double precision: "
+                           "check that the 'Functional weights' are not many orders of "
+                           "magnitude apart"));
 
     // the columns of S in blocks, each block solved at once
     constexpr unsigned int   block = 64;
     const unsigned int       nc    = contact.size();
     LAPACKFullMatrix<double> S(nc, nc);
     std::vector<LevelVector> columns(std::min(block, nc), qp.new_vector()), ys(columns);
-    LevelVector              Ay = qp.new_vector();
     for (unsigned int first = 0; first < nc; first += block)
       {
         const unsigned int n_columns = std::min(block, nc - first);
@@ -72,16 +77,22 @@ namespace FoslsContact
               if (qp.role[e->column()] == DoFRole::free)
                 columns[k].local_element(e->column()) = e->value(); // A symmetric
           }
-        direct.vmult(ys, columns);
+        cholesky.solve(ys, columns);
         for (unsigned int k = 0; k < n_columns; ++k)
           {
             LevelVector &y = ys[k];
             for (types::global_dof_index i = 0; i < n; ++i)
               if (qp.role[i] != DoFRole::free)
                 y.local_element(i) = 0;
-            vmult(A, Ay, y);
+            // (A y)_r on the contact rows only, each summed as vmult()
+            // sums it
             for (unsigned int r = 0; r < nc; ++r)
-              S(r, first + k) = A.el(contact[r], contact[first + k]) - Ay.local_element(contact[r]);
+              {
+                double Ay = 0;
+                for (auto e = A.begin(contact[r]); e != A.end(contact[r]); ++e)
+                  Ay += e->value() * y.local_element(e->column());
+                S(r, first + k) = A.el(contact[r], contact[first + k]) - Ay;
+              }
           }
       }
     for (unsigned int r = 0; r < nc; ++r)

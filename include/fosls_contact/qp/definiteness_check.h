@@ -14,8 +14,9 @@ namespace FoslsContact
    * ones). With I the other non-fixed DoFs, A is positive definite iff
    * A_II is (it is: plain FOSLS with a Dirichlet part) and the Schur
    * complement S = A_CC - A_CI A_II^{-1} A_IC is. S is small and dense: it
-   * costs one sparse factorization and |C| solves. It runs on a problem of
-   * one process (a GatheredQP). The premise that A_II is definite fails
+   * costs one sparse Cholesky factorization of A_II (SparseCholesky, which
+   * refuses an A_II that is not positive definite in floating point) and
+   * |C| solves. It runs on a problem of one process (a GatheredQP). The premise that A_II is definite fails
    * where the boundary conditions leave a rigid motion free:
    * least_mode_energy() checks that first.
    */

@@ -18,8 +18,9 @@ namespace FoslsContact
   using namespace dealii;
 
   /**
-   * A sparse direct solver for the reference solver and the definiteness
-   * check: Trilinos Amesos with KLU. On these FOSLS matrices KLU factorizes
+   * A sparse direct solver for the reference solver (the active set
+   * method and its cross checks): Trilinos Amesos with KLU, an LU
+   * factorization with pivoting. On these FOSLS matrices KLU factorizes
    * about 8x faster than UMFPACK (measured: 25,090 DoFs 1.2 s vs 10.4 s;
    * 99,330 DoFs 10 s), so it is the fairer reference. On several processes
    * the matrix is a distributed Trilinos matrix; Amesos gathers it on one

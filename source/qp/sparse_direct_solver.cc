@@ -7,6 +7,13 @@
 #include <Amesos_BaseSolver.h>
 #include <Epetra_LinearProblem.h>
 #include <Epetra_MultiVector.h>
+#include <trilinos_klu_decl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <climits>
+#include <iomanip>
+#include <sstream>
 
 
 namespace FoslsContact
@@ -17,6 +24,40 @@ namespace FoslsContact
       "the sparse direct solver (Amesos KLU) found the matrix singular in floating point; "
       "the functional is too badly conditioned for double precision: check that the "
       "'Functional weights' are not many orders of magnitude apart";
+
+    /**
+     * The eight-byte units that KLU allocates for the factors of a matrix
+     * on the pattern @p structure (n rows, all here; symmetric, so its
+     * rows are its columns), about as klu_factor() computes them: its estimate
+     * of the entries of L and U for the ordering Amesos's KLU uses (its
+     * defaults: BTF and AMD), times initmem_amd (1.2), an index and a
+     * value each. KLU refuses more than INT_MAX units (its offsets into
+     * them are ints) as if it had run out of memory. Negative if KLU
+     * cannot analyze the pattern.
+     */
+    double
+    klu_factor_units(const SparsityPattern &structure, const unsigned int n, double &entries)
+    {
+      std::vector<int> starts(n + 1), rows;
+      rows.reserve(structure.n_nonzero_elements());
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          for (auto e = structure.begin(i); e != structure.end(i); ++e)
+            rows.push_back(e->column());
+          starts[i + 1] = rows.size();
+          // (KLU wants each column's rows sorted; deal.II keeps the
+          // diagonal first)
+          std::sort(rows.begin() + starts[i], rows.end());
+        }
+      trilinos_klu_common common;
+      trilinos_klu_defaults(&common);
+      trilinos_klu_symbolic *symbolic = trilinos_klu_analyze(n, starts.data(), rows.data(), &common);
+      if (symbolic == nullptr)
+        return -1;
+      entries = symbolic->lnz + symbolic->unz;
+      trilinos_klu_free_symbolic(&symbolic, &common);
+      return common.initmem_amd * entries * (sizeof(int) + sizeof(double)) / sizeof(double);
+    }
   } // namespace
 
   SparseDirectSolver::SparseDirectSolver() = default;
@@ -71,9 +112,31 @@ namespace FoslsContact
     Amesos factory;
     solver.reset(factory.Create("Amesos_Klu", *problem));
     AssertThrow(solver, ExcMessage("Trilinos' Amesos has no KLU"));
-    // (a nonzero error is Trilinos' -22: KLU found a zero pivot)
-    AssertThrow(solver->SymbolicFactorization() == 0 && solver->NumericFactorization() == 0,
-                ExcMessage(singular_matrix_message));
+    // A nonzero error is Trilinos' -22 both where KLU found a zero pivot
+    // and where the space for its factors would exceed its 32-bit offsets
+    // or the memory: the active set method on the cube's level 6 (411,939
+    // DoFs; KLU estimates 2.1e9 entries in its factors) failed after 6 s
+    // and was reported singular. On one process (the matrix all here)
+    // KLU's own estimate tells the two apart.
+    const bool factorized =
+      solver->SymbolicFactorization() == 0 && solver->NumericFactorization() == 0;
+    if (!factorized && Utilities::MPI::n_mpi_processes(comm) == 1)
+      {
+        double       entries = 0;
+        const double units   = klu_factor_units(structure, n, entries);
+        const double memory =
+          static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+        std::ostringstream message;
+        message << std::setprecision(2) << "the sparse direct solver (Amesos KLU) cannot factorize "
+                << "the matrix of " << n << " DoFs: by KLU's estimate its factors hold " << entries
+                << " entries, for which it allocates " << units << " eight-byte units ("
+                << 8 * units / 1e9 << " GB), more than its 32-bit offsets (" << double(INT_MAX)
+                << ") or this machine's memory (" << memory / 1e9 << " GB) allow; solve with "
+                << "'Solver/Type = monotone multigrid' (and 'Solver/Cross check = false'), or on "
+                << "fewer 'Geometry/Levels'";
+        AssertThrow(!(units > INT_MAX || 8 * units > memory), ExcMessage(message.str()));
+      }
+    AssertThrow(factorized, ExcMessage(singular_matrix_message));
   }
 
 

@@ -9,7 +9,8 @@ on the finest level (Solver/Definiteness check max dofs raised above its
 DoFs), and prints the bracket [accepted, refused] and its move from the
 previous level. The check's smallest relative eigenvalue of the contact
 Schur complement decides (doc/method.md section 6); the solve itself is cut
-to one active-set step.
+to one projected Gauss-Seidel sweep (a step of the active set method would
+factorize the whole matrix: a minute on the cube's level 5).
 
     bench/definiteness_limit.py [--exe build/fosls-contact]
         [--scene square.prm:3-9] [--scene hertz.prm:2-6] [--scene cube3d.prm:2-5]
@@ -56,7 +57,7 @@ def smallest_eigenvalue(exe, scene, levels, weight):
              "--set", f"Functional weights/C_compl={weight!r}",
              "--set", f"Geometry/Levels={levels}",
              "--set", "Solver/Definiteness check max dofs=100000000",
-             "--set", "Solver/Type=active set",
+             "--set", "Solver/Type=projected gauss seidel",
              "--set", "Solver/Max iterations=1",
              "--set", "Output/Write vtu=false",
              "--set", f"Output/Directory={out}/o"],

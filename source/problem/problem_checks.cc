@@ -188,9 +188,15 @@ namespace FoslsContact
       const GatheredQP gathered(level_qp);
       if (gathered.here())
         result = DefinitenessCheck::run(gathered.qp());
+      // (every process learns the outcome, so that every process stops
+      // with the same line)
       result.min_relative_eigenvalue =
         Utilities::MPI::broadcast(discretization.get_communicator(),
                                   result.min_relative_eigenvalue,
+                                  0);
+      result.interior_definite =
+        Utilities::MPI::broadcast(discretization.get_communicator(),
+                                  result.interior_definite,
                                   0);
     };
     if (!coarser)
@@ -202,6 +208,12 @@ namespace FoslsContact
         FoslsAssembler<dim>(discretization, checked).assemble(level, coarse);
         check(coarse);
       }
+    AssertThrow(result.interior_definite,
+                ExcMessage("the functional's matrix without its contact DoFs is not positive "
+                           "definite in floating point on level " + std::to_string(level + 1) +
+                           " (its Cholesky factorization failed): the functional is too badly "
+                           "conditioned for double precision; check that the 'Functional "
+                           "weights' are not many orders of magnitude apart"));
     const double       seconds = wall.wall_time();
     std::ostringstream margin;
     if (coarser)

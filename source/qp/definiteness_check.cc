@@ -52,12 +52,11 @@ namespace FoslsContact
         if (qp.role[i] != DoFRole::free || qp.role[e->column()] != DoFRole::free)
           e->value() = (i == e->column()) ? 1. : 0.;
     SparseCholesky cholesky;
-    AssertThrow(cholesky.factorize(M, qp.coupling_sparsity),
-                ExcMessage("the functional's matrix without its contact DoFs is not positive "
-                           "definite in floating point (its Cholesky factorization failed); "
-                           "the functional is too badly conditioned for double precision: "
-                           "check that the 'Functional weights' are not many orders of "
-                           "magnitude apart"));
+    if (!cholesky.factorize(M, qp.coupling_sparsity))
+      {
+        result.interior_definite = false;
+        return result;
+      }
 
     // the columns of S in blocks, each block solved at once
     constexpr unsigned int   block = 64;

@@ -42,6 +42,8 @@ namespace FoslsContact
     AssertThrow(matrix.m() == matrix.n(), ExcDimensionMismatch(matrix.m(), matrix.n()));
     n                                = matrix.m();
     const SparsityPattern &structure = pattern ? *pattern : matrix.get_sparsity_pattern();
+    AssertThrow(structure.n_rows() == n && structure.n_cols() == n,
+                ExcDimensionMismatch(structure.n_rows(), n));
     cholmod_common &       common    = data->common;
     if (data->factor)
       cholmod_free_factor(&data->factor, &common);
@@ -78,13 +80,24 @@ namespace FoslsContact
     column_start[n] = k;
 
     data->factor = cholmod_analyze(A, &common);
-    const bool analyzed = data->factor != nullptr;
-    if (analyzed)
+    if (data->factor != nullptr)
       cholmod_factorize(A, data->factor, &common);
     cholmod_free_sparse(&A, &common);
-    AssertThrow(analyzed && common.status != CHOLMOD_OUT_OF_MEMORY,
-                ExcMessage("CHOLMOD ran out of memory factorizing a matrix of " +
-                           std::to_string(n) + " rows"));
+    // (an error is negative; a matrix that is not positive definite is
+    // CHOLMOD's warning CHOLMOD_NOT_POSDEF, with the failed column in minor)
+    if (data->factor == nullptr || common.status < CHOLMOD_OK)
+      {
+        const int status = common.status;
+        if (data->factor)
+          cholmod_free_factor(&data->factor, &common);
+        AssertThrow(false,
+                    ExcMessage("CHOLMOD could not factorize a matrix of " + std::to_string(n) +
+                               " rows (" +
+                               (status == CHOLMOD_OUT_OF_MEMORY ? "out of memory" :
+                                status == CHOLMOD_TOO_LARGE     ? "too large for its int indices" :
+                                                                  "status " + std::to_string(status)) +
+                               ")"));
+      }
     if (common.status == CHOLMOD_NOT_POSDEF || data->factor->minor < n)
       {
         cholmod_free_factor(&data->factor, &common);

@@ -8,10 +8,10 @@
 #include <Epetra_LinearProblem.h>
 #include <Epetra_MultiVector.h>
 #include <trilinos_klu_decl.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <climits>
+#include <limits>
 #include <iomanip>
 #include <sstream>
 
@@ -26,17 +26,21 @@ namespace FoslsContact
       "'Functional weights' are not many orders of magnitude apart";
 
     /**
-     * The eight-byte units that KLU allocates for the factors of a matrix
-     * on the pattern @p structure (n rows, all here; symmetric, so its
-     * rows are its columns), about as klu_factor() computes them: its estimate
-     * of the entries of L and U for the ordering Amesos's KLU uses (its
-     * defaults: BTF and AMD), times initmem_amd (1.2), an index and a
-     * value each. KLU refuses more than INT_MAX units (its offsets into
-     * them are ints) as if it had run out of memory. Negative if KLU
-     * cannot analyze the pattern.
+     * The eight-byte units that KLU allocates for the factors of the
+     * largest block of a matrix on the pattern @p structure (n rows, all
+     * here; symmetric, so its rows are its columns), as klu_factor()
+     * computes them: for each diagonal block of its ordering (Amesos's
+     * KLU's defaults: BTF and AMD), initmem_amd (1.2) times its estimate of
+     * the block's entries in L, and as many in U, plus the block's size,
+     * an index and a value each. KLU refuses a block of more than INT_MAX
+     * units (its offsets into them are ints) as if it had run out of
+     * memory. @p entries is the estimate of all entries of L and U. An
+     * estimate past INT_MAX, which KLU keeps in an int, comes out
+     * negative: infinitely many units. Negative if KLU cannot analyze the
+     * pattern.
      */
     double
-    klu_factor_units(const SparsityPattern &structure, const unsigned int n, double &entries)
+    klu_block_units(const SparsityPattern &structure, const unsigned int n, double &entries)
     {
       std::vector<int> starts(n + 1), rows;
       rows.reserve(structure.n_nonzero_elements());
@@ -45,18 +49,29 @@ namespace FoslsContact
           for (auto e = structure.begin(i); e != structure.end(i); ++e)
             rows.push_back(e->column());
           starts[i + 1] = rows.size();
-          // (KLU wants each column's rows sorted; deal.II keeps the
-          // diagonal first)
-          std::sort(rows.begin() + starts[i], rows.end());
         }
       trilinos_klu_common common;
       trilinos_klu_defaults(&common);
       trilinos_klu_symbolic *symbolic = trilinos_klu_analyze(n, starts.data(), rows.data(), &common);
       if (symbolic == nullptr)
         return -1;
-      entries = symbolic->lnz + symbolic->unz;
+      entries      = symbolic->lnz + symbolic->unz;
+      double units = 0;
+      for (int b = 0; b < symbolic->nblocks; ++b)
+        {
+          const double size  = symbolic->R[b + 1] - symbolic->R[b];
+          const double lnz   = symbolic->Lnz[b];
+          const double lsize = common.initmem_amd * lnz + size;
+          // (a block of one is no factorization)
+          if (size > 1)
+            units = std::max(units,
+                             lnz < 0 ? std::numeric_limits<double>::infinity() :
+                                       2 * lsize * (sizeof(int) + sizeof(double)) / sizeof(double));
+        }
+      if (entries < 0)
+        units = std::numeric_limits<double>::infinity();
       trilinos_klu_free_symbolic(&symbolic, &common);
-      return common.initmem_amd * entries * (sizeof(int) + sizeof(double)) / sizeof(double);
+      return units;
     }
   } // namespace
 
@@ -112,29 +127,24 @@ namespace FoslsContact
     Amesos factory;
     solver.reset(factory.Create("Amesos_Klu", *problem));
     AssertThrow(solver, ExcMessage("Trilinos' Amesos has no KLU"));
-    // A nonzero error is Trilinos' -22 both where KLU found a zero pivot
-    // and where the space for its factors would exceed its 32-bit offsets
-    // or the memory: the active set method on the cube's level 6 (411,939
-    // DoFs; KLU estimates 2.1e9 entries in its factors) failed after 6 s
-    // and was reported singular. On one process (the matrix all here)
-    // KLU's own estimate tells the two apart.
+    // Trilinos' error -22 stands both for a zero pivot and for KLU's
+    // refusal to allocate its factors; on one process (the matrix all
+    // here) KLU's own estimate tells the two apart. (On several, Amesos
+    // gathers the matrix, and the pattern here is this process's rows.)
     const bool factorized =
       solver->SymbolicFactorization() == 0 && solver->NumericFactorization() == 0;
     if (!factorized && Utilities::MPI::n_mpi_processes(comm) == 1)
       {
         double       entries = 0;
-        const double units   = klu_factor_units(structure, n, entries);
-        const double memory =
-          static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+        const double units   = klu_block_units(structure, n, entries);
         std::ostringstream message;
         message << std::setprecision(2) << "the sparse direct solver (Amesos KLU) cannot factorize "
                 << "the matrix of " << n << " DoFs: by KLU's estimate its factors hold " << entries
-                << " entries, for which it allocates " << units << " eight-byte units ("
-                << 8 * units / 1e9 << " GB), more than its 32-bit offsets (" << double(INT_MAX)
-                << ") or this machine's memory (" << memory / 1e9 << " GB) allow; solve with "
-                << "'Solver/Type = monotone multigrid' (and 'Solver/Cross check = false'), or on "
-                << "fewer 'Geometry/Levels'";
-        AssertThrow(!(units > INT_MAX || 8 * units > memory), ExcMessage(message.str()));
+                << " entries, for which it would allocate " << units
+                << " eight-byte units, more than its 32-bit offsets (" << double(INT_MAX)
+                << ") allow; solve with 'Solver/Type = monotone multigrid' (and 'Solver/Cross "
+                << "check = false'), or on fewer 'Geometry/Levels'";
+        AssertThrow(!(units > INT_MAX), ExcMessage(message.str()));
       }
     AssertThrow(factorized, ExcMessage(singular_matrix_message));
   }

@@ -13,10 +13,11 @@ namespace FoslsContact
    * and 7), and it couples only the contact normal DoFs C (the bounded
    * ones). With I the other non-fixed DoFs, A is positive definite iff
    * A_II is (it is: plain FOSLS with a Dirichlet part) and the Schur
-   * complement S = A_CC - A_CI A_II^{-1} A_IC is. S is small and dense: it
-   * costs one sparse Cholesky factorization of A_II (SparseCholesky, which
-   * refuses an A_II that is not positive definite in floating point) and
-   * |C| solves. It runs on a problem of one process (a GatheredQP). The premise that A_II is definite fails
+   * complement S = A_CC - A_CI A_II^{-1} A_IC is. S is small and dense:
+   * it costs one sparse Cholesky factorization of A_II (SparseCholesky,
+   * which refuses an A_II that is not positive definite in floating
+   * point) and |C| solves. It runs on a problem of one process (a
+   * GatheredQP). The premise that A_II is definite fails
    * where the boundary conditions leave a rigid motion free:
    * least_mode_energy() checks that first.
    */
@@ -25,7 +26,12 @@ namespace FoslsContact
     /** Smallest eigenvalue of D^{-1/2} S D^{-1/2}, D = diag(A_CC). */
     double       min_relative_eigenvalue = 1;
     unsigned int n_contact_dofs          = 0;
-    bool         definite() const { return min_relative_eigenvalue > 0; }
+    /**
+     * Whether A_II was positive definite in floating point (its Cholesky
+     * factorization went through); if not, S is not formed.
+     */
+    bool interior_definite = true;
+    bool definite() const { return interior_definite && min_relative_eigenvalue > 0; }
 
     static DefinitenessCheck run(const ConstrainedQP &qp);
 

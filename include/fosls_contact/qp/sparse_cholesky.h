@@ -26,7 +26,7 @@ namespace FoslsContact
    * columns: on the cube's level 4 (7,371 DoFs, the level the cube's
    * checks run on from level 5 up) CHOLMOD chooses METIS's ordering, and
    * the factorization takes 0.17 s against 0.63 s for KLU's LU (Amesos,
-   * which the reference solver keeps), with 1.6 million entries in L
+   * the reference solver's factorization), with 1.6 million entries in L
    * against KLU's 2.1 million in each of L and U (doc/performance.md).
    */
   class SparseCholesky

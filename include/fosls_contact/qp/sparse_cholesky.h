@@ -24,10 +24,10 @@ namespace FoslsContact
    * whenever the problem is well posed (doc/method.md section 6). A
    * Cholesky factorization needs no pivoting and works on dense blocks of
    * columns: on the cube's level 4 (7,371 DoFs, the level the cube's
-   * checks run on from level 5 up) CHOLMOD chooses METIS's ordering, and
-   * the factorization takes 0.17 s against 0.63 s for KLU's LU (Amesos,
-   * the reference solver's factorization), with 1.6 million entries in L
-   * against KLU's 2.1 million in each of L and U (doc/performance.md).
+   * checks run on from level 5 up) the check takes 0.42 s with it, 1.19 s
+   * with KLU's LU (Amesos, the reference solver's factorization), and on
+   * level 5 18.4 s against more than 120 s (bench/definiteness_cost.py,
+   * doc/performance.md).
    */
   class SparseCholesky
   {

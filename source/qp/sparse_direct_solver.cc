@@ -129,10 +129,13 @@ namespace FoslsContact
     AssertThrow(solver, ExcMessage("Trilinos' Amesos has no KLU"));
     // Trilinos' error -22 stands both for a zero pivot and for KLU's
     // refusal to allocate its factors; on one process (the matrix all
-    // here) KLU's own estimate tells the two apart. (On several, Amesos
-    // gathers the matrix, and the pattern here is this process's rows.)
+    // here) KLU's own estimate tells the two apart. On several, Amesos
+    // factorizes on the first process, and only there returns the error:
+    // every process takes the outcome, so that all stop with the same line
+    // instead of the others waiting in the next collective call.
+    const bool analyzed = Utilities::MPI::min(solver->SymbolicFactorization() == 0 ? 1 : 0, comm);
     const bool factorized =
-      solver->SymbolicFactorization() == 0 && solver->NumericFactorization() == 0;
+      analyzed && Utilities::MPI::min(solver->NumericFactorization() == 0 ? 1 : 0, comm);
     if (!factorized && Utilities::MPI::n_mpi_processes(comm) == 1)
       {
         double       entries = 0;
@@ -146,6 +149,13 @@ namespace FoslsContact
                 << "check = false'), or on fewer 'Geometry/Levels'";
         AssertThrow(!(units > INT_MAX), ExcMessage(message.str()));
       }
+    AssertThrow(factorized || Utilities::MPI::n_mpi_processes(comm) == 1,
+                ExcMessage("the sparse direct solver (Amesos KLU) cannot factorize the matrix of " +
+                           std::to_string(p->size()) +
+                           " DoFs: it is singular in floating point (the 'Functional weights' "
+                           "many orders of magnitude apart), or its factors exceed what KLU can "
+                           "hold (a large 3D mesh: use 'Solver/Type = monotone multigrid'); a "
+                           "run on one process tells which"));
     AssertThrow(factorized, ExcMessage(singular_matrix_message));
   }
 

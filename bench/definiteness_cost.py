@@ -17,7 +17,7 @@ import subprocess
 import tempfile
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parent.parent
+from definiteness_limit import ROOT, finest_level_check
 
 
 def arguments():
@@ -34,13 +34,7 @@ def arguments():
 def check_seconds(exe, levels, timeout):
     """(DoFs, the check's seconds) of one run, or (None, None) if cut off."""
     with tempfile.TemporaryDirectory() as out:
-        command = [exe, str(ROOT / "prm" / "cube3d.prm"),
-                   "--set", f"Geometry/Levels={levels}",
-                   "--set", "Solver/Definiteness check max dofs=100000000",
-                   "--set", "Solver/Type=projected gauss seidel",
-                   "--set", "Solver/Max iterations=1",
-                   "--set", "Output/Write vtu=false",
-                   "--set", f"Output/Directory={out}/o"]
+        command = finest_level_check(exe, "cube3d.prm", levels, f"{out}/o")
         env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
         try:
             subprocess.run(command, capture_output=True, text=True, timeout=timeout, env=env)

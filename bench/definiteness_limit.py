@@ -49,18 +49,29 @@ def arguments():
     return a
 
 
+def finest_level_check(exe, scene, levels, out, settings=()):
+    """The command of a run of prm/@p scene on @p levels levels with the
+    definiteness check on its finest level and the solve cut to one
+    projected Gauss-Seidel sweep, its output in @p out; @p settings: more
+    "key=value" settings (also for bench/definiteness_cost.py)."""
+    command = [exe, str(ROOT / "prm" / scene),
+               "--set", f"Geometry/Levels={levels}",
+               "--set", "Solver/Definiteness check max dofs=100000000",
+               "--set", "Solver/Type=projected gauss seidel",
+               "--set", "Solver/Max iterations=1",
+               "--set", "Output/Write vtu=false",
+               "--set", f"Output/Directory={out}"]
+    for setting in settings:
+        command += ["--set", setting]
+    return command
+
+
 def smallest_eigenvalue(exe, scene, levels, weight):
     """The check's eigenvalue and level for C_compl = weight."""
     with tempfile.TemporaryDirectory() as out:
         run = subprocess.run(
-            [exe, str(ROOT / "prm" / scene),
-             "--set", f"Functional weights/C_compl={weight!r}",
-             "--set", f"Geometry/Levels={levels}",
-             "--set", "Solver/Definiteness check max dofs=100000000",
-             "--set", "Solver/Type=projected gauss seidel",
-             "--set", "Solver/Max iterations=1",
-             "--set", "Output/Write vtu=false",
-             "--set", f"Output/Directory={out}/o"],
+            finest_level_check(exe, scene, levels, f"{out}/o",
+                               [f"Functional weights/C_compl={weight!r}"]),
             capture_output=True, text=True)
     m = PATTERN.search(run.stdout + run.stderr)
     if not m:

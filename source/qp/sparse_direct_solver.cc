@@ -136,27 +136,26 @@ namespace FoslsContact
     const bool analyzed = Utilities::MPI::min(solver->SymbolicFactorization() == 0 ? 1 : 0, comm);
     const bool factorized =
       analyzed && Utilities::MPI::min(solver->NumericFactorization() == 0 ? 1 : 0, comm);
-    if (!factorized && Utilities::MPI::n_mpi_processes(comm) == 1)
-      {
-        double       entries = 0;
-        const double units   = klu_block_units(structure, n, entries);
-        std::ostringstream message;
-        message << std::setprecision(2) << "the sparse direct solver (Amesos KLU) cannot factorize "
-                << "the matrix of " << n << " DoFs: by KLU's estimate its factors hold " << entries
-                << " entries, for which it would allocate " << units
-                << " eight-byte units, more than its 32-bit offsets (" << double(INT_MAX)
-                << ") allow; solve with 'Solver/Type = monotone multigrid' (and 'Solver/Cross "
-                << "check = false'), or on fewer 'Geometry/Levels'";
-        AssertThrow(!(units > INT_MAX), ExcMessage(message.str()));
-      }
-    AssertThrow(factorized || Utilities::MPI::n_mpi_processes(comm) == 1,
+    if (factorized)
+      return;
+    AssertThrow(Utilities::MPI::n_mpi_processes(comm) == 1,
                 ExcMessage("the sparse direct solver (Amesos KLU) cannot factorize the matrix of " +
                            std::to_string(p->size()) +
                            " DoFs: it is singular in floating point (the 'Functional weights' "
                            "many orders of magnitude apart), or its factors exceed what KLU can "
                            "hold (a large 3D mesh: use 'Solver/Type = monotone multigrid'); a "
                            "run on one process tells which"));
-    AssertThrow(factorized, ExcMessage(singular_matrix_message));
+    double       entries = 0;
+    const double units   = klu_block_units(structure, n, entries);
+    std::ostringstream message;
+    message << std::setprecision(2) << "the sparse direct solver (Amesos KLU) cannot factorize "
+            << "the matrix of " << n << " DoFs: by KLU's estimate its factors hold " << entries
+            << " entries, for which it would allocate " << units
+            << " eight-byte units, more than its 32-bit offsets (" << double(INT_MAX)
+            << ") allow; solve with 'Solver/Type = monotone multigrid' (and 'Solver/Cross "
+            << "check = false'), or on fewer 'Geometry/Levels'";
+    AssertThrow(!(units > INT_MAX), ExcMessage(message.str()));
+    AssertThrow(false, ExcMessage(singular_matrix_message));
   }
 
 

@@ -62,9 +62,10 @@ namespace FoslsContact
     summary["peak_rss_mb"]             = number(Utilities::MPI::sum(peak_mb, comm));
     summary["peak_rss_mb_per_process"] = number(Utilities::MPI::max(peak_mb, comm));
     std::vector<std::string> phases;
-    for (const auto &[phase, rss_mb, peak_rss_mb] : phase_memory)
+    for (const auto &[phase, rss_mb, peak_rss_mb, rss_file_mb] : phase_memory)
       phases.push_back("{\"phase\": \"" + phase + "\", \"rss_mb\": " + number(rss_mb) +
-                       ", \"peak_rss_mb\": " + number(peak_rss_mb) + "}");
+                       ", \"peak_rss_mb\": " + number(peak_rss_mb) +
+                       ", \"rss_file_mb\": " + number(rss_file_mb) + "}");
     summary["memory_by_phase"] = json_array(phases);
     summary["mpi_processes"] = std::to_string(Utilities::MPI::n_mpi_processes(comm));
     // communication of the solve: point-to-point exchanges of the busiest

@@ -174,7 +174,11 @@ namespace FoslsContact
         B_t[k][i] = b[k]->local_element(i);
     problem->SetLHS(&X_t);
     problem->SetRHS(&B_t);
-    AssertThrow(solver->Solve() == 0, ExcMessage(singular_matrix_message));
+    // (Amesos solves on the first process and returns its error only there:
+    // every process takes the outcome, as after the factorization)
+    const bool solved =
+      Utilities::MPI::min(solver->Solve() == 0 ? 1 : 0, partitioner->get_mpi_communicator());
+    AssertThrow(solved, ExcMessage(singular_matrix_message));
     for (int k = 0; k < columns; ++k)
       for (unsigned int i = 0; i < n; ++i)
         x[k]->local_element(i) = X_t[k][i];

@@ -14,8 +14,8 @@
 #   contact pressure, normal displacement and gap, the gap is never
 #   negative, and the pressure integrated over the contact faces is the
 #   contact force (RT0's normal traction is constant on a face);
-#   summary.json's memory_by_phase has the resident memory after each phase,
-#   and its memory_mb the memory of the program's structures.
+#   summary.json's memory_by_phase has the resident memory after each phase
+#   (and its file-backed part), and its memory_mb the memory of the program's structures.
 # - prm/steel_cylinder.prm (2 levels), a curved boundary: the VTU draws the
 #   cells with a quadratic mapping, subdivided once, so the midpoints of
 #   the boundary edges lie on the circle of radius 50 mm as well.
@@ -121,9 +121,10 @@ phases = square["memory_by_phase"]
 check([p["phase"] for p in phases] == ["Setup: mesh, DoFs, levels", "Assembly",
       "Checks: data, rigid motions, definiteness", "Initial guess", "Setup: solver", "Solve"]
       and all(0 < p["rss_mb"] <= p["peak_rss_mb"] <= square["peak_rss_mb"] for p in phases)
-      and all(a["peak_rss_mb"] <= b["peak_rss_mb"] for a, b in zip(phases, phases[1:])),
+      and all(a["peak_rss_mb"] <= b["peak_rss_mb"] for a, b in zip(phases, phases[1:]))
+      and all(0 < p["rss_file_mb"] < p["rss_mb"] for p in phases),
       "SI square: memory_by_phase has the resident memory after each phase up to the solve, "
-      "its peaks growing up to peak_rss_mb")
+      "its peaks growing up to peak_rss_mb, the file-backed part of it positive and smaller")
 memory = square["memory_mb"]
 check(set(memory) >= {"mesh and DoF handler", "level data (coupling patterns, DoF tables, roles, bounds)",
                       "prolongations of the uniform levels",

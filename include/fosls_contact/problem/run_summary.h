@@ -19,12 +19,18 @@
 
 namespace FoslsContact
 {
-  /** Resident memory (MB, all processes) after a phase of FoslsProblem::run(). */
+  /**
+   * Resident memory (MB, all processes) after a phase of FoslsProblem::run():
+   * all of it, its peak so far, and the part that is file-backed (the pages
+   * of the program and its shared libraries, which the kernel can drop and
+   * reread; what the run allocates is the rest).
+   */
   struct PhaseMemory
   {
     std::string phase;
     double      rss_mb;
     double      peak_rss_mb;
+    double      rss_file_mb;
   };
 
 

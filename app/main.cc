@@ -10,9 +10,11 @@
  * main() reads the command line and the scene (CommandLine,
  * ParameterReader) and hands the parameters to FoslsProblem. Exit codes
  * (CommandLine::ExitCode): 0 converged, 1 error (one line on stderr, no
- * output files), 2 not converged (files written, one line on stderr). On
- * several processes, an error that not all of them meet, which bad input
- * never is, ends in MPI_Abort (ErrorLine::stop).
+ * output files), 2 not converged (files written, one line on stderr), 3 an
+ * error on some of several processes that the others did not learn of
+ * (one line, MPI_Abort, ErrorLine::stop): the program decides the errors
+ * it expects on all processes (CollectiveError), so 3 means memory that
+ * ran out on one process, or a defect.
  */
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -22,6 +24,7 @@
 #include <fosls_contact/fosls_problem.h>
 #include <fosls_contact/input/command_line.h>
 #include <fosls_contact/input/parameter_reader.h>
+#include <fosls_contact/output/collective_error.h>
 #include <fosls_contact/output/error_line.h>
 #include <fosls_contact/parameters.h>
 
@@ -32,6 +35,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 int
@@ -90,7 +94,24 @@ main(int argc, char *argv[])
   int         status     = CommandLine::success;
   try
     {
-      const CommandLine command_line(argc, argv);
+      dealii::ParameterHandler prm;
+      Parameters::AllParameters::declare_parameters(prm);
+      ParameterReader reader(prm);
+      // Every process reads the command line and the scene file: one that
+      // cannot (the file missing on its node, another command line) stops
+      // them all with its line (CollectiveError), where the others would
+      // wait for it in their first collective call.
+      std::unique_ptr<const CommandLine> arguments;
+      CollectiveError::run(MPI_COMM_WORLD, [&]() {
+        arguments = std::make_unique<const CommandLine>(argc, argv);
+        if (arguments->help || arguments->version)
+          return;
+        if (!arguments->scene.empty())
+          reader.read_file(arguments->scene);
+        for (const auto &o : arguments->overrides)
+          reader.set(o);
+      });
+      const CommandLine &command_line = *arguments;
       if (command_line.help || command_line.version)
         {
           if (first_rank)
@@ -99,13 +120,6 @@ main(int argc, char *argv[])
         }
       else
         {
-          dealii::ParameterHandler prm;
-          Parameters::AllParameters::declare_parameters(prm);
-          ParameterReader reader(prm);
-          if (!command_line.scene.empty())
-            reader.read_file(command_line.scene);
-          for (const auto &o : command_line.overrides)
-            reader.set(o);
           if (command_line.print_parameters)
             {
               // every parameter with its value, default, pattern and

@@ -97,6 +97,8 @@ case "$mode" in
     cat ../stderr
     [ $rc -ne 0 ] || fail "the program accepted the bad input (exit code 0)"
     [ $rc -lt 128 ] || fail "the program died by a signal (exit code $rc)"
+    # (3: an error that some MPI processes met alone, the run aborted)
+    [ $rc -eq 1 ] || fail "expected exit code 1 (an error all processes decide), got $rc"
     lines=$(wc -l < ../stderr)
     [ "$lines" -eq 1 ] || fail "expected exactly one line on stderr, got $lines"
     grep -Eq -- "$regex" ../stderr || fail "stderr does not match /$regex/"

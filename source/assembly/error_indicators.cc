@@ -158,7 +158,7 @@ namespace FoslsContact
                     [](const Empty &) {},
                     Scratch(discretization.get_mapping(), discretization.get_fe()),
                     Empty());
-    errors.rethrow();
+    errors.rethrow(discretization.get_communicator());
     summarize();
   }
 

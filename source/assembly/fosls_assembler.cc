@@ -473,21 +473,31 @@ namespace FoslsContact
                                        fe,
                                        QGauss<dim>(3),
                                        QGauss<dim - 1>(3));
-    if (data.active_mesh)
-      WorkStream::run(dof_handler.begin_active(),
-                      dof_handler.end(),
-                      worker,
-                      copier,
-                      scratch,
-                      AssemblyCopy(n));
-    else
-      WorkStream::run(
-        dof_handler.begin_mg(level), dof_handler.end_mg(level), worker, copier, scratch, AssemblyCopy(n));
-    if (errors.caught())
+    try
       {
+        if (data.active_mesh)
+          WorkStream::run(dof_handler.begin_active(),
+                          dof_handler.end(),
+                          worker,
+                          copier,
+                          scratch,
+                          AssemblyCopy(n));
+        else
+          WorkStream::run(dof_handler.begin_mg(level),
+                          dof_handler.end_mg(level),
+                          worker,
+                          copier,
+                          scratch,
+                          AssemblyCopy(n));
+        errors.rethrow(qp.get_communicator());
+      }
+    catch (...)
+      {
+        // (they are on this function's patterns, which the exception
+        // destroys)
         qp.matrix_eq.clear();
         qp.matrix_compl.clear();
-        errors.rethrow();
+        throw;
       }
     // an eliminated DoF keeps a unit diagonal (it is fixed at zero), so
     // that the matrix stays regular for the direct solvers

@@ -1,5 +1,6 @@
 #include <fosls_contact/discretization/contact_entities.h>
 #include <fosls_contact/discretization/normal_tangential_basis.h>
+#include <fosls_contact/output/collective_error.h>
 
 #include <iomanip>
 #include <sstream>
@@ -33,44 +34,48 @@ namespace FoslsContact
     double          penetration = 0;
     std::string     unsupported;
     Vector<double>  values(dim);
-    for (const auto &[vi, p] : boundary.contact_vertex_points)
-      {
-        const auto dofs = data.vertex_dofs.at(vi);
-        const auto d    = boundary.dirichlet_vertices.find(vi);
-        if (d == boundary.dirichlet_vertices.end())
-          {
-            data.role[dofs[0]]                       = DoFRole::bounded;
-            data.upper_bounds.local_element(dofs[0]) = scene.gap().value(p);
-            continue;
-          }
-        const auto &         mask = d->second;
-        const Tensor<1, dim> n    = scene.obstacle_normal(p);
-        const double         gap  = scene.gap().value(p);
-        scene.dirichlet_values().vector_value(p, values);
-        bool   prescribed = true; // u.n: n has no part along a free component
-        double normal_u   = 0;
-        for (unsigned int k = 0; k < dim; ++k)
-          {
-            prescribed = prescribed && (mask[k] || n[k] == 0.);
-            if (mask[k])
-              normal_u += values[k] * n[k];
-          }
-        if (prescribed)
-          {
-            // (relative to 1 too: sin(pi) = 1.2e-16 against a gap of 0
-            // must pass)
-            if (normal_u - gap >
-                penetration_round_off * (1. + std::abs(normal_u) + std::abs(gap)))
-              penetration = std::max(penetration, normal_u - gap);
-            continue;
-          }
-        if (!roller_contact_vertex(data, dofs, mask, n, gap, values))
-          {
-            std::ostringstream where;
-            where << p;
-            unsupported = where.str();
-          }
-      }
+    // (the normal, the gap and the Dirichlet values at this process's
+    // vertices: an error there stops every process, CollectiveError)
+    CollectiveError::run(data.partitioner->get_mpi_communicator(), [&]() {
+      for (const auto &[vi, p] : boundary.contact_vertex_points)
+        {
+          const auto dofs = data.vertex_dofs.at(vi);
+          const auto d    = boundary.dirichlet_vertices.find(vi);
+          if (d == boundary.dirichlet_vertices.end())
+            {
+              data.role[dofs[0]]                       = DoFRole::bounded;
+              data.upper_bounds.local_element(dofs[0]) = scene.gap().value(p);
+              continue;
+            }
+          const auto &         mask = d->second;
+          const Tensor<1, dim> n    = scene.obstacle_normal(p);
+          const double         gap  = scene.gap().value(p);
+          scene.dirichlet_values().vector_value(p, values);
+          bool   prescribed = true; // u.n: n has no part along a free component
+          double normal_u   = 0;
+          for (unsigned int k = 0; k < dim; ++k)
+            {
+              prescribed = prescribed && (mask[k] || n[k] == 0.);
+              if (mask[k])
+                normal_u += values[k] * n[k];
+            }
+          if (prescribed)
+            {
+              // (relative to 1 too: sin(pi) = 1.2e-16 against a gap of 0
+              // must pass)
+              if (normal_u - gap >
+                  penetration_round_off * (1. + std::abs(normal_u) + std::abs(gap)))
+                penetration = std::max(penetration, normal_u - gap);
+              continue;
+            }
+          if (!roller_contact_vertex(data, dofs, mask, n, gap, values))
+            {
+              std::ostringstream where;
+              where << p;
+              unsupported = where.str();
+            }
+        }
+    });
     check_contact_vertices(data, unsupported, penetration);
   }
 

@@ -14,6 +14,7 @@
 #include <fosls_contact/discretization/level_dof_numbering.h>
 #include <fosls_contact/discretization/refinement_marking.h>
 #include <fosls_contact/discretization/refinement_transfer.h>
+#include <fosls_contact/output/collective_error.h>
 
 #include <algorithm>
 #include <array>
@@ -147,9 +148,15 @@ namespace FoslsContact
   Discretization<dim>::setup_level(const unsigned int l)
   {
     map_level_dofs(l);
-    LevelData<dim> &      data = levels[l];
-    const auto            boundary =
-      BoundaryFaceConditions<dim>(scene, mapping, dof_handler).apply(l, data);
+    LevelData<dim> &data = levels[l];
+    // (the data expressions are evaluated at the faces and vertices of this
+    // process's cells: an error there, e.g. an obstacle normal that is zero
+    // at one of them, is decided by all processes, CollectiveError)
+    const MPI_Comm                                        comm = get_communicator();
+    typename BoundaryFaceConditions<dim>::BoundaryData boundary;
+    CollectiveError::run(comm, [&]() {
+      boundary = BoundaryFaceConditions<dim>(scene, mapping, dof_handler).apply(l, data);
+    });
     const ContactEntities<dim> contact(scene, triangulation);
     contact.set_contact_vertices(data, boundary);
     if (data.active_mesh)
@@ -159,7 +166,7 @@ namespace FoslsContact
     exchange_ghosts(data.partitioner, data.role);
     update_ghosts(data.fixed_values);
     update_ghosts(data.upper_bounds);
-    contact.add_rotations(data, boundary);
+    CollectiveError::run(comm, [&]() { contact.add_rotations(data, boundary); });
     set_coupling_pattern(l);
   }
 

@@ -85,7 +85,10 @@ namespace FoslsContact
            "     'fosls-contact: error in <where>: <what>', and no output files\n"
            "  2  the solver did not converge within Solver/Max iterations: the output\n"
            "     files are written, summary.json has \"converged\": false, and one line\n"
-           "     on stderr says so\n";
+           "     on stderr says so\n"
+           "  3  an error that only some MPI processes met, the others stopped by\n"
+           "     MPI_Abort: memory that ran out on one process, or a defect of the\n"
+           "     program (worth a report)\n";
   }
 
 

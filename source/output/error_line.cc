@@ -1,10 +1,12 @@
 #include <deal.II/base/exceptions.h>
 
+#include <fosls_contact/input/command_line.h>
 #include <fosls_contact/output/error_line.h>
 
 #include <unistd.h>
 
 #include <chrono>
+#include <new>
 #include <sstream>
 #include <thread>
 
@@ -68,6 +70,10 @@ namespace FoslsContact
         if (pos != std::string::npos)
           text = text.substr(pos + 23);
       }
+    else if (dynamic_cast<const std::bad_alloc *>(&exc) != nullptr)
+      // (what() says only "std::bad_alloc")
+      text = "out of memory (std::bad_alloc): the mesh and solver need more than this process "
+             "may allocate; see doc/performance.md for the memory per DoF";
     else
       text = exc.what();
     return one_line(text);
@@ -178,7 +184,7 @@ namespace FoslsContact
         return 1;
       }
     print(line);
-    MPI_Abort(MPI_COMM_WORLD, 1);
-    return 1;
+    MPI_Abort(MPI_COMM_WORLD, CommandLine::error_on_some_processes);
+    return CommandLine::error_on_some_processes;
   }
 } // namespace FoslsContact

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <fosls_contact/assembly/fosls_assembler.h>
+#include <fosls_contact/output/collective_error.h>
 #include <fosls_contact/output/json.h>
 #include <fosls_contact/problem/problem_checks.h>
 #include <fosls_contact/qp/definiteness_check.h>
@@ -186,8 +187,12 @@ namespace FoslsContact
     DefinitenessCheck result;
     auto              check = [&](const ConstrainedQP &level_qp) {
       const GatheredQP gathered(level_qp);
-      if (gathered.here())
-        result = DefinitenessCheck::run(gathered.qp());
+      // The first process alone factorizes: an error there (memory,
+      // CHOLMOD) stops every process (CollectiveError).
+      CollectiveError::run(discretization.get_communicator(), [&]() {
+        if (gathered.here())
+          result = DefinitenessCheck::run(gathered.qp());
+      });
       // (every process learns the outcome, so that every process stops
       // with the same line)
       result.min_relative_eigenvalue =

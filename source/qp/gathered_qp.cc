@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.templates.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <fosls_contact/output/collective_error.h>
 #include <fosls_contact/qp/gathered_qp.h>
 
 #include <cstring>
@@ -24,33 +25,33 @@ namespace FoslsContact
       static_assert(std::is_trivially_copyable_v<T>, "gather_parts sends raw bytes");
       if (Utilities::MPI::n_mpi_processes(comm) == 1)
         return {mine};
-      const std::size_t bytes = mine.size() * sizeof(T);
-      AssertThrow(bytes <= std::size_t(std::numeric_limits<int>::max()),
-                  ExcMessage("GatheredQP: a process's part exceeds 2 GB"));
-      const bool       root   = Utilities::MPI::this_mpi_process(comm) == 0;
-      const int        n_mine = static_cast<int>(bytes);
-      std::vector<int> counts(root ? Utilities::MPI::n_mpi_processes(comm) : 0);
-      int ierr = MPI_Gather(&n_mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-      AssertThrowMPI(ierr);
-      std::vector<int> offsets(counts.size(), 0);
-      std::size_t      total = 0;
-      for (std::size_t r = 0; r < counts.size(); ++r)
-        {
-          AssertThrow(total <= std::size_t(std::numeric_limits<int>::max()),
-                      ExcMessage("GatheredQP: the gathered problem exceeds 2 GB"));
-          offsets[r] = static_cast<int>(total);
-          total += counts[r];
-        }
-      std::vector<char> all(total);
-      ierr = MPI_Gatherv(mine.data(), n_mine, MPI_BYTE, all.data(), counts.data(),
-                         offsets.data(), MPI_BYTE, 0, comm);
+      // (every process learns every size, so that all take the same
+      // decision before any of them gathers)
+      const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+      auto [counts, offsets]  = byte_counts_and_offsets(
+        gather_all(comm, std::uint64_t(mine.size() * sizeof(T))));
+      const int         n_mine = counts[rank];
+      const std::size_t total  = std::size_t(offsets.back()) + counts.back();
+      if (rank != 0)
+        counts.clear(), offsets.clear();
+      // (the first process's memory may run out here, between collective
+      // calls: every process learns it before the next, CollectiveError)
+      std::vector<char> all;
+      CollectiveError::run(comm, [&]() {
+        if (rank == 0)
+          all.resize(total);
+      });
+      const int ierr = MPI_Gatherv(mine.data(), n_mine, MPI_BYTE, all.data(), counts.data(),
+                                   offsets.data(), MPI_BYTE, 0, comm);
       AssertThrowMPI(ierr);
       std::vector<std::vector<T>> parts(counts.size());
-      for (std::size_t r = 0; r < counts.size(); ++r)
-        {
-          parts[r].resize(counts[r] / sizeof(T));
-          std::memcpy(parts[r].data(), all.data() + offsets[r], counts[r]);
-        }
+      CollectiveError::run(comm, [&]() {
+        for (std::size_t r = 0; r < counts.size(); ++r)
+          {
+            parts[r].resize(counts[r] / sizeof(T));
+            std::memcpy(parts[r].data(), all.data() + offsets[r], counts[r]);
+          }
+      });
       return parts;
     }
   } // namespace
@@ -141,19 +142,21 @@ namespace FoslsContact
     const auto role_parts = collect(owned_roles(qp.role, p.locally_owned_size()));
     const LevelVector b = gather(qp.rhs), fixed = gather(qp.fixed_values),
                       ub = gather(qp.upper_bounds);
-    if (!holder)
-      return;
-
-    const auto n = p.size();
-    assemble_gathered_entries(matrix_parts, n, serial.sparsity, &serial.matrix);
-    assemble_gathered_entries(coupling_parts, n, coupling, nullptr);
-    serial.coupling_sparsity = &coupling;
-    serial.rhs               = b;
-    serial.fixed_values      = fixed;
-    serial.upper_bounds      = ub;
-    serial.constant          = qp.constant;
-    serial.dimension         = qp.dimension;
-    serial.role              = gathered_roles(role_parts);
+    // (an error of the holder alone, its memory, stops every process)
+    CollectiveError::run(comm, [&]() {
+      if (!holder)
+        return;
+      const auto n = p.size();
+      assemble_gathered_entries(matrix_parts, n, serial.sparsity, &serial.matrix);
+      assemble_gathered_entries(coupling_parts, n, coupling, nullptr);
+      serial.coupling_sparsity = &coupling;
+      serial.rhs               = b;
+      serial.fixed_values      = fixed;
+      serial.upper_bounds      = ub;
+      serial.constant          = qp.constant;
+      serial.dimension         = qp.dimension;
+      serial.role              = gathered_roles(role_parts);
+    });
   }
 
 
@@ -161,15 +164,17 @@ namespace FoslsContact
   GatheredQP::gather(const LevelVector &x) const
   {
     const std::vector<double> mine(x.begin(), x.begin() + x.locally_owned_size());
-    const auto all = gather_parts(comm, mine);
+    const auto  all = gather_parts(comm, mine);
     LevelVector whole;
-    if (!holder)
-      return whole;
-    whole.reinit(serial.partitioner);
-    unsigned int k = 0;
-    for (const auto &part : all)
-      for (const double value : part)
-        whole.local_element(k++) = value;
+    CollectiveError::run(comm, [&]() {
+      if (!holder)
+        return;
+      whole.reinit(serial.partitioner);
+      unsigned int k = 0;
+      for (const auto &part : all)
+        for (const double value : part)
+          whole.local_element(k++) = value;
+    });
     return whole;
   }
 

@@ -122,6 +122,25 @@ namespace FoslsContact
   }
 
 
+  std::pair<std::vector<int>, std::vector<int>>
+  byte_counts_and_offsets(const std::vector<std::uint64_t> &sizes)
+  {
+    const std::uint64_t int_max = std::numeric_limits<int>::max();
+    std::vector<int>    counts, offsets;
+    std::uint64_t       offset = 0;
+    for (const auto size : sizes)
+      {
+        AssertThrow(size <= int_max && offset <= int_max,
+                    ExcMessage("a process's part of a gathered problem, or the parts before it, "
+                               "exceed the 2 GB that MPI counts in an int"));
+        counts.push_back(int(size));
+        offsets.push_back(int(offset));
+        offset += size;
+      }
+    return {counts, offsets};
+  }
+
+
   std::vector<unsigned int>
   owners(const Utilities::MPI::Partitioner &          partitioner,
          const std::vector<types::global_dof_index> &indices)

@@ -2,6 +2,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <fosls_contact/output/collective_error.h>
 #include <fosls_contact/scene/boundary_manifolds.h>
 #include <fosls_contact/scene/cell_shape_check.h>
 #include <fosls_contact/scene/curved_body.h>
@@ -35,8 +36,10 @@ namespace FoslsContact
     : geometry(prm.geometry)
     , dirichlet_masks(prm.boundary_conditions.dirichlet_components)
   {
+    // (every process reads the mesh file: one that cannot, on a node where
+    // the file is not, stops them all, CollectiveError)
     if (geometry.shape == Parameters::Geometry::Shape::file)
-      {
+      CollectiveError::run(MPI_COMM_WORLD, [&]() {
         mesh_file = std::make_unique<MeshFile<dim>>(geometry.mesh_file);
         // (as for the box and the half disc: a body far from the origin
         // against its size cannot be refined in double precision)
@@ -51,7 +54,7 @@ namespace FoslsContact
                                  std::abs(box.get_boundary_points().second[d])});
           }
         Parameters::check_resolvable(size, distance, "the size of the " + mesh_file->name());
-      }
+      });
     reference.length = reference_length(prm);
     reference.stress =
       prm.scaling.reference_stress > 0 ? prm.scaling.reference_stress : prm.material.mu;

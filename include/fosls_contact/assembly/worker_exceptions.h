@@ -1,6 +1,10 @@
 #ifndef fosls_contact_assembly_worker_exceptions_h
 #define fosls_contact_assembly_worker_exceptions_h
 
+#include <fosls_contact/output/collective_error.h>
+
+#include <mpi.h>
+
 #include <exception>
 #include <mutex>
 
@@ -46,6 +50,18 @@ namespace FoslsContact
     {
       if (error)
         std::rethrow_exception(error);
+    }
+
+    /**
+     * Throws, on every process of @p comm, the kept exception of the first
+     * process that kept one (CollectiveError): a loop over a process's own
+     * cells meets an expression's error at its points only, and the other
+     * processes must not go on into the next collective call alone.
+     */
+    void
+    rethrow(const MPI_Comm comm) const
+    {
+      CollectiveError::run(comm, [this]() { rethrow(); });
     }
 
   private:

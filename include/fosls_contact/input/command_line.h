@@ -33,6 +33,15 @@ namespace FoslsContact
        * on stderr says so.
        */
       not_converged = 2,
+      /**
+       * An error that some MPI processes met and the others did not learn
+       * of (they waited in a collective call): the line of a process that
+       * met it, the run stopped by MPI_Abort. The errors the program
+       * expects (bad data, unreadable files, the gathering process's
+       * memory) are decided by all processes (exit code 1), so this one is
+       * memory that ran out on one process, or a defect of the program.
+       */
+      error_on_some_processes = 3,
     };
 
     /** Parse @p argv; throws InputError (where: "command line"). */

@@ -48,7 +48,9 @@ namespace FoslsContact
      * every process meets: bad input), the first prints the line; if some
      * did not come within 10 s (an error of one process, the others wait
      * in a collective operation), this one prints its line and aborts the
-     * run.
+     * run with exit code 3 (CommandLine::error_on_some_processes; the
+     * program decides the errors it expects on all processes,
+     * CollectiveError).
      */
     static int stop(const std::string &line, const MPI_Comm error_comm);
 

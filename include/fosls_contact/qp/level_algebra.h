@@ -13,6 +13,7 @@
 #include <limits>
 #include <memory>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace FoslsContact
@@ -180,6 +181,15 @@ namespace FoslsContact
   } // namespace internal
 
   /**
+   * The counts and displacements in bytes (MPI's int) of a gather of parts
+   * of @p sizes bytes, the processes in order; throws if a count or a
+   * displacement does not fit in an int. Every process that knows all
+   * sizes takes the same decision.
+   */
+  std::pair<std::vector<int>, std::vector<int>>
+  byte_counts_and_offsets(const std::vector<std::uint64_t> &sizes);
+
+  /**
    * Utilities::MPI::all_gather() (@p object of every process, in the order
    * of the ranks), but without its serialization, which compresses with
    * zlib even on one process: on one process @p object itself; plain data
@@ -209,13 +219,12 @@ namespace FoslsContact
     else if constexpr (internal::IsVectorOfPlainData<T>::value)
       {
         using Element = typename T::value_type;
-        AssertThrow(object.size() * sizeof(Element) <= std::numeric_limits<int>::max(),
-                    ExcMessage("gather_all: more than 2 GB per process"));
-        const std::vector<int> bytes = gather_all(comm, int(object.size() * sizeof(Element)));
-        std::vector<int>       offsets(n_processes, 0);
-        for (unsigned int p = 1; p < n_processes; ++p)
-          offsets[p] = offsets[p - 1] + bytes[p - 1];
-        std::vector<Element> buffer((offsets.back() + bytes.back()) / sizeof(Element));
+        // (every process sees every size, so all take the same decision
+        // before any of them gathers the data)
+        const auto [bytes, offsets] = byte_counts_and_offsets(
+          gather_all(comm, std::uint64_t(object.size() * sizeof(Element))));
+        std::vector<Element> buffer((std::size_t(offsets.back()) + bytes.back()) /
+                                    sizeof(Element));
         const int            ierr = MPI_Allgatherv(object.data(),
                                         bytes[Utilities::MPI::this_mpi_process(comm)],
                                         MPI_BYTE,

@@ -32,10 +32,10 @@ namespace FoslsContact
     // refused: a box constraint cannot hold u.n <= g and a Cartesian
     // component together.
     double          penetration = 0;
-    std::string     unsupported;
     Vector<double>  values(dim);
     // (the normal, the gap and the Dirichlet values at this process's
-    // vertices: an error there stops every process, CollectiveError)
+    // vertices: an error there, or the first unsupported roller vertex of
+    // the first process that has one, stops every process, CollectiveError)
     CollectiveError::run(data.partitioner->get_mpi_communicator(), [&]() {
       for (const auto &[vi, p] : boundary.contact_vertex_points)
         {
@@ -72,11 +72,17 @@ namespace FoslsContact
             {
               std::ostringstream where;
               where << p;
-              unsupported = where.str();
+              AssertThrow(false,
+                          ExcMessage("a vertex at (" + where.str() + ")" +
+                                     " of both a roller ('Boundary conditions/Dirichlet "
+                                     "components') and the contact boundary has an obstacle "
+                                     "normal with a part along a prescribed component "
+                                     "('Data/Obstacle normal'): u.n <= g and the prescribed "
+                                     "components cannot be held together there"));
             }
         }
     });
-    check_contact_vertices(data, unsupported, penetration);
+    check_penetration(data, penetration);
   }
 
 
@@ -119,22 +125,8 @@ namespace FoslsContact
 
   template <int dim>
   void
-  ContactEntities<dim>::check_contact_vertices(const LevelData<dim> &data,
-                                              std::string           unsupported,
-                                              double                penetration) const
+  ContactEntities<dim>::check_penetration(const LevelData<dim> &data, double penetration) const
   {
-    // (the first such vertex of any process: the message is printed by
-    // process 0)
-    for (const auto &where :
-         Utilities::MPI::all_gather(data.partitioner->get_mpi_communicator(), unsupported))
-      if (unsupported.empty())
-        unsupported = where;
-    AssertThrow(unsupported.empty(),
-                ExcMessage("a vertex at (" + unsupported + ")" +
-                           " of both a roller ('Boundary conditions/Dirichlet components') "
-                           "and the contact boundary has an obstacle normal with a part along "
-                           "a prescribed component ('Data/Obstacle normal'): u.n <= g and the "
-                           "prescribed components cannot be held together there"));
     penetration = Utilities::MPI::max(penetration, data.partitioner->get_mpi_communicator());
     if (penetration > 0)
       {

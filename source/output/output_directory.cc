@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <fosls_contact/output/collective_error.h>
 #include <fosls_contact/output/directory_swap.h>
 #include <fosls_contact/output/error_line.h>
 #include <fosls_contact/output/file_system.h>
@@ -58,20 +59,20 @@ namespace FoslsContact
     , comm(comm)
     , first(dealii::Utilities::MPI::this_mpi_process(comm) == 0)
   {
-    std::string error;
-    if (first)
-      try
-        {
-          prepare();
-        }
-      catch (const std::exception &e)
-        {
-          error = e.what();
-          release();
-        }
-    error = dealii::Utilities::MPI::broadcast(comm, error, 0);
-    if (!error.empty())
-      throw std::runtime_error(error);
+    // (the first process prepares the directory; every process stops on
+    // its error)
+    CollectiveError::run(comm, [&]() {
+      if (first)
+        try
+          {
+            prepare();
+          }
+        catch (...)
+          {
+            release();
+            throw;
+          }
+    });
     staging = dealii::Utilities::MPI::broadcast(comm, staging.string(), 0);
   }
 
@@ -256,27 +257,14 @@ namespace FoslsContact
   OutputDirectory::publish(const std::string &error)
   {
     // every process has written (and fsynced) its files, or failed
-    std::string failure;
-    for (const auto &e : dealii::Utilities::MPI::all_gather(comm, error))
-      if (failure.empty() && !e.empty())
-        failure = e;
-    if (!failure.empty())
-      throw std::runtime_error(failure);
+    CollectiveError::decide(comm, !error.empty(), error);
     std::set<std::string> names;
     for (const auto &part : dealii::Utilities::MPI::gather(comm, written, 0))
       names.insert(part.begin(), part.end());
-    if (first)
-      try
-        {
-          publish_here(names);
-        }
-      catch (const std::exception &e)
-        {
-          failure = e.what();
-        }
-    failure = dealii::Utilities::MPI::broadcast(comm, failure, 0);
-    if (!failure.empty())
-      throw std::runtime_error(failure);
+    CollectiveError::run(comm, [&]() {
+      if (first)
+        publish_here(names);
+    });
   }
 
 

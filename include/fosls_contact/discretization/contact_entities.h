@@ -57,13 +57,11 @@ namespace FoslsContact
                                const double                                    gap,
                                const Vector<double> &                          values) const;
     /**
-     * The errors of set_contact_vertices(), over all processes: the first
-     * unsupported roller vertex (@p unsupported, empty if none here) and
-     * the largest penetration of a prescribed vertex. Collective.
+     * The penetration error of set_contact_vertices(), over all processes:
+     * the largest penetration of a prescribed vertex (@p penetration, this
+     * process's). Collective.
      */
-    void check_contact_vertices(const LevelData<dim> &data,
-                                std::string           unsupported,
-                                double                penetration) const;
+    void check_penetration(const LevelData<dim> &data, double penetration) const;
     /**
      * A displacement prescribed at a contact vertex exceeds the gap when
      * u.n - g is above this times 1 + |u.n| + |g|: round-off of the data

@@ -29,11 +29,7 @@ main(int argc, char *argv[])
   const unsigned int               size = Utilities::MPI::n_mpi_processes(comm);
   const bool                       first = rank == 0;
   auto everywhere = [&](const bool condition, const std::string &what) {
-    const bool all = Utilities::MPI::min(condition ? 1u : 0u, comm) == 1u;
-    if (first)
-      check(all, what);
-    else if (!all)
-      ++n_failures();
+    check_everywhere(comm, condition, what);
   };
   if (first)
     std::cout << "processes: " << size << std::endl;

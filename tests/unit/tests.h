@@ -5,6 +5,7 @@
 #ifndef fosls_contact_tests_h
 #define fosls_contact_tests_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <fosls_contact/parameters.h>
@@ -38,6 +39,22 @@ namespace FoslsContactTests
     if (!condition)
       ++n_failures();
     return condition;
+  }
+
+  /**
+   * check() on several processes: @p condition must hold on every process
+   * of @p comm; the first process prints the line, another counts a
+   * failure where it does not hold everywhere. Collective.
+   */
+  inline bool
+  check_everywhere(const MPI_Comm comm, const bool condition, const std::string &what)
+  {
+    const bool all = Utilities::MPI::min(condition ? 1u : 0u, comm) == 1u;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      check(all, what);
+    else if (!all)
+      ++n_failures();
+    return all;
   }
 
   /** The exit code of main(). */

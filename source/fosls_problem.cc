@@ -429,8 +429,8 @@ namespace FoslsContact
     Utilities::System::MemoryStats memory;
     Utilities::System::get_memory_stats(memory);
     // (deal.II's MemoryStats has no RssFile: the file-backed pages, those of
-    // the program and its libraries, about 160 MB of which less than 20 MB
-    // are written to; read where the kernel reports it, 0 where it does not)
+    // the program and its libraries, 153 MB in bench/scale.py's runs; read
+    // where the kernel reports it, 0 where it does not)
     double        rss_file_kb = 0.;
     std::ifstream status("/proc/self/status");
     for (std::string line; std::getline(status, line);)

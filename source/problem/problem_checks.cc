@@ -187,21 +187,26 @@ namespace FoslsContact
     DefinitenessCheck result;
     auto              check = [&](const ConstrainedQP &level_qp) {
       const GatheredQP gathered(level_qp);
-      // The first process alone factorizes: an error there (memory,
-      // CHOLMOD) stops every process (CollectiveError).
+      // The first process alone factorizes: its refusal of A_II, or an
+      // error there (memory, CHOLMOD), stops every process with the same
+      // line (CollectiveError).
       CollectiveError::run(discretization.get_communicator(), [&]() {
-        if (gathered.here())
-          result = DefinitenessCheck::run(gathered.qp());
+        if (!gathered.here())
+          return;
+        result = DefinitenessCheck::run(gathered.qp());
+        AssertThrow(result.interior_definite,
+                    ExcMessage("the functional's matrix without its contact DoFs is not "
+                               "positive definite in floating point on level " +
+                               std::to_string(level + 1) +
+                               " (its Cholesky factorization failed): the functional is too "
+                               "badly conditioned for double precision; check that the "
+                               "'Functional weights' are not many orders of magnitude apart"));
       });
       // (every process learns the outcome, so that every process stops
       // with the same line)
       result.min_relative_eigenvalue =
         Utilities::MPI::broadcast(discretization.get_communicator(),
                                   result.min_relative_eigenvalue,
-                                  0);
-      result.interior_definite =
-        Utilities::MPI::broadcast(discretization.get_communicator(),
-                                  result.interior_definite,
                                   0);
     };
     if (!coarser)
@@ -213,12 +218,6 @@ namespace FoslsContact
         FoslsAssembler<dim>(discretization, checked).assemble(level, coarse);
         check(coarse);
       }
-    AssertThrow(result.interior_definite,
-                ExcMessage("the functional's matrix without its contact DoFs is not positive "
-                           "definite in floating point on level " + std::to_string(level + 1) +
-                           " (its Cholesky factorization failed): the functional is too badly "
-                           "conditioned for double precision; check that the 'Functional "
-                           "weights' are not many orders of magnitude apart"));
     const double       seconds = wall.wall_time();
     std::ostringstream margin;
     if (coarser)

@@ -5,7 +5,6 @@
 #include <fosls_contact/qp/gathered_qp.h>
 
 #include <cstring>
-#include <limits>
 #include <type_traits>
 
 namespace FoslsContact

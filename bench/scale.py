@@ -3,14 +3,17 @@
 per DoF, for the square (prm/square.prm, levels 5-9) and the cube
 (prm/cube3d.prm, levels 3-7, as far as the machine's memory allows), one
 process with all its threads, the fastest of --runs runs, and the cube at
-levels 5-7 once more with the patch rows read from the level matrices
-(Solver/Patch rows = matrix, this build only); with --base-rev,
-the same for another revision of the program (built here), run alternately
-with this build, and the ratios. Writes doc/scale_results.md (generated;
-doc/performance.md explains it) and prints it.
+levels 5-7 and the square at levels 9-10 once more with the patch rows read
+from the level matrices (Solver/Patch rows = matrix, this build only); with
+--base-rev, the same for another revision of the program (built here), run
+alternately with this build, and the ratios. Writes doc/scale_results.md
+(generated; doc/performance.md explains it), copies its table of the
+targets into doc/performance.md (between the markers there), and prints it.
 
     bench/scale.py                                  # this build only
     bench/scale.py --base-rev 93af7be --runs 3      # against an earlier main
+    bench/scale.py --copy-targets                   # only the copy, from
+                                                    # doc/scale_results.md
 
 Also: the square's contact force against its limit (extrapolated from
 levels 7-9, whose differences shrink by a steady factor, doc/results.md a)
@@ -24,12 +27,17 @@ import os
 import shutil
 import subprocess
 import sys
+import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from parallel import ROOT, run  # noqa: E402
 
 RES = os.path.join(ROOT, "bench", "results", "scale")
 OUT = os.path.join(ROOT, "doc", "scale_results.md")
+PERFORMANCE = os.path.join(ROOT, "doc", "performance.md")
+# the block of doc/performance.md that holds the copy of the targets' table
+BEGIN = "<!-- the targets of bench/scale.py, copied from scale_results.md: do not edit -->"
+END = "<!-- end of the targets of bench/scale.py -->"
 # (name, scene, levels, growth per level, settings, also run by the base
 # build); "cube, rows from the matrix" is the cube with the patch smoother's
 # rows read from the level matrices (Solver/Patch rows = matrix), which
@@ -43,7 +51,7 @@ SQUARE_DISCRETIZATION = "square, discretization accuracy"
 CASES = [("square", "square.prm", range(5, 10), 4.0, {}, True),
          ("cube", "cube3d.prm", range(3, 8), 8.0, {}, True),
          (MATRIX_ROWS, "cube3d.prm", range(5, 8), 8.0, {"Solver/Patch rows": "matrix"}, False),
-         (SQUARE_MATRIX_ROWS, "square.prm", range(9, 10), 4.0,
+         (SQUARE_MATRIX_ROWS, "square.prm", range(9, 11), 4.0,
           {"Solver/Patch rows": "matrix"}, False),
          (SQUARE_DISCRETIZATION, "square.prm", range(8, 10), 4.0,
           {"Solver/Stopping criterion": "discretization accuracy"}, False)]
@@ -59,6 +67,9 @@ def arguments():
     p.add_argument("--threads", type=int, default=2, help="threads (default 2)")
     p.add_argument("--max-level", type=int, default=99,
                    help="skip levels above this (both scenes)")
+    p.add_argument("--copy-targets", action="store_true",
+                   help="only copy the targets' table of doc/scale_results.md into "
+                        "doc/performance.md")
     return p.parse_args()
 
 
@@ -182,10 +193,24 @@ def targets(results):
     return ["## Targets\n", "| target | measured | |", "|---|---|---|"] + rows + [""]
 
 
-def phases(results):
-    """Where the wall time of the largest runs goes: the sections of
-    summary.json's time_sections_s, and what is left (start-up, the data
-    checks, the output, which is written after summary.json)."""
+def start_up(binary, runs):
+    """The wall time of `binary --version`, the fastest of @p runs: what
+    every run spends before its work (the dynamic loader binding the
+    symbols of deal.II and the libraries it brings, MPI_Init)."""
+    best = float("inf")
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    for _ in range(max(runs, 5)):
+        t = time.time()
+        subprocess.run([binary, "--version"], capture_output=True, check=True, env=env)
+        best = min(best, time.time() - t)
+    return best
+
+
+def phases(results, start):
+    """Where the wall time of the largest runs goes: the start-up (@p
+    start, seconds), the sections of summary.json's time_sections_s, and
+    what is left (the data checks, the output, which is written after
+    summary.json, the end of the process)."""
     cases = [(tag, level) for tag, level in (("square", 9), ("cube", 6), ("cube", 7))
              if results.get((tag, level))]
     if not cases:
@@ -193,16 +218,18 @@ def phases(results):
     names = ["Setup: mesh, DoFs, levels", "Assembly", "Definiteness check", "Setup: solver",
              "Solve"]
     lines = ["## Where the wall time goes (seconds)\n",
+             "The start-up is the fastest of 5 runs of `fosls-contact --version`: the dynamic "
+             "loader binding the symbols of deal.II and the libraries it brings, and "
+             "MPI_Init, before any work of the run.\n",
              "| phase | " + " | ".join(f"{t} level {l}" for t, l in cases) + " |",
              "|---|" + "---|" * len(cases)]
-    for name in names + ["the rest (start-up, data checks, output)"]:
-        cells = []
-        for case in cases:
-            s = results[case]["this"]
-            sections = s["time_sections_s"]
-            value = sections.get(name, 0.) if name in names else \
-                s["wall_s"] - sum(sections.get(n, 0.) for n in names)
-            cells.append(f"{value:.2f}")
+    rows = [("start-up", lambda s, sections: start)] + \
+        [(name, lambda s, sections, name=name: sections.get(name, 0.)) for name in names] + \
+        [("the rest (data checks, output, the end of the process)",
+          lambda s, sections: s["wall_s"] - start - sum(sections.get(n, 0.) for n in names))]
+    for name, value in rows:
+        cells = [f"{value(results[c]['this'], results[c]['this']['time_sections_s']):.2f}"
+                 for c in cases]
         lines.append(f"| {name} | " + " | ".join(cells) + " |")
     return lines + [""]
 
@@ -237,8 +264,83 @@ def matrix_rows(results):
             "|---|---|---|---|---|---|---|---|---|---|"] + lines + [""]
 
 
+def memory_by_level(results):
+    """Where the memory of the finest run of each scene goes, level by
+    level (summary.json's memory_mb_by_level), in bytes per DoF of the
+    finest level: each structure on the finest level and on the coarser
+    ones together; what the structures hold together against the peak
+    without the file-backed pages; the difference is what no structure
+    reports: the solve's temporary vectors and the memory the allocator
+    keeps after the set-up freed it."""
+    rows, cases = {}, []
+    for tag in ("square", SQUARE_MATRIX_ROWS, "cube", MATRIX_ROWS):
+        level, s = finest(results, tag)
+        if not s or "memory_mb_by_level" not in s or file_backed_mb(s) is None:
+            continue
+        cases.append((tag, level, s))
+    if not cases:
+        return []
+    names = []
+    for _, _, s in cases:
+        names += [n for n in ["mesh and DoF handler"] + list(s["memory_mb_by_level"])
+                  if n not in names]
+
+    def per_dof(mb, s):
+        return f"{mb * 1024 * 1024 / s['dofs']:.0f}"
+
+    lines = ["## Memory by level\n",
+             "Bytes per DoF of the finest level (summary.json's `memory_mb_by_level`): each "
+             "structure on the finest level, on the coarser levels together, and in all; the "
+             "mesh and DoF handler hold all levels at once. The structures together are "
+             "compared with the peak resident memory without the file-backed pages; the "
+             "difference, not attributed, is what no structure reports: the solve's "
+             "temporary vectors (of the Newton step's conjugate gradients and of the cycles) "
+             "and memory the allocator keeps after the set-up freed it.\n",
+             "| structure | " + " | ".join(f"{t} level {l}: finest, coarser, all"
+                                             for t, l, _ in cases) + " |",
+             "|---|" + "---|" * len(cases)]
+    for name in names:
+        cells = []
+        for _, _, s in cases:
+            if name == "mesh and DoF handler":
+                cells.append(f"-, -, {per_dof(s['memory_mb'][name], s)}")
+                continue
+            mb = s["memory_mb_by_level"].get(name)
+            cells.append(f"{per_dof(mb[-1], s)}, {per_dof(sum(mb[:-1]), s)}, "
+                         f"{per_dof(sum(mb), s)}" if mb else "")
+        lines.append(f"| {name} | " + " | ".join(cells) + " |")
+    together = [sum(s["memory_mb"].values()) for _, _, s in cases]
+    rest = [s["peak_rss_mb"] - file_backed_mb(s) for _, _, s in cases]
+    lines.append("| the structures together | " +
+                 " | ".join(per_dof(t, s) for t, (_, _, s) in zip(together, cases)) + " |")
+    lines.append("| peak without the file-backed pages | " +
+                 " | ".join(per_dof(r, s) for r, (_, _, s) in zip(rest, cases)) + " |")
+    lines.append("| not attributed | " +
+                 " | ".join(per_dof(r - t, s) for r, t, (_, _, s) in zip(rest, together, cases))
+                 + " |")
+    return lines + [""]
+
+
+def copy_targets(text):
+    """Put the section "## Targets" of @p text (scale_results.md) between
+    the markers BEGIN and END of doc/performance.md."""
+    section = text.split("## Targets\n", 1)[1].split("\n## ", 1)[0].strip()
+    with open(PERFORMANCE) as f:
+        doc = f.read()
+    if BEGIN not in doc or END not in doc:
+        sys.exit(f"{PERFORMANCE}: the markers of the targets' table are missing")
+    head, rest = doc.split(BEGIN, 1)
+    tail = rest.split(END, 1)[1]
+    with open(PERFORMANCE, "w") as f:
+        f.write(head + BEGIN + "\n\n" + section + "\n\n" + END + tail)
+
+
 def main():
     a = arguments()
+    if a.copy_targets:
+        with open(OUT) as f:
+            copy_targets(f.read())
+        return
     os.makedirs(RES, exist_ok=True)
     binaries = {"this": os.path.join(ROOT, "build", "fosls-contact")}
     if a.base_rev:
@@ -327,8 +429,9 @@ def main():
                                    if results.get(("square", level))) + ".\n")
 
     lines += targets(results)
-    lines += phases(results)
+    lines += phases(results, start_up(binaries["this"], a.runs))
     lines += matrix_rows(results)
+    lines += memory_by_level(results)
 
     # memory by structure, where the build reports it
     for (tag, level), best in results.items():
@@ -342,6 +445,7 @@ def main():
     text = "\n".join(lines)
     with open(OUT, "w") as f:
         f.write(text)
+    copy_targets(text)
     print(text)
 
 

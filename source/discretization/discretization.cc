@@ -386,20 +386,20 @@ namespace FoslsContact
 
 
   template <int dim>
-  std::size_t
+  LevelBytes
   Discretization<dim>::level_memory_consumption() const
   {
     using MemoryConsumption::memory_consumption;
-    std::size_t bytes = 0;
+    LevelBytes bytes(levels.size(), 0);
     for (const LevelData<dim> &data : levels)
       {
-        bytes += data.sparsity.memory_consumption() + data.role.capacity() * sizeof(DoFRole) +
+        bytes[data.level] += data.sparsity.memory_consumption() + data.role.capacity() * sizeof(DoFRole) +
                  data.fixed_values.memory_consumption() + data.upper_bounds.memory_consumption() +
                  memory_consumption(data.rotation_of_dof) +
                  (data.vertex_dofs.capacity() + data.face_dofs.capacity()) *
                    sizeof(typename LevelData<dim>::DofsAt::value_type);
         for (const RotationBlock<dim> &block : data.rotations)
-          bytes += sizeof(block) + block.matrix.memory_consumption() +
+          bytes[data.level] += sizeof(block) + block.matrix.memory_consumption() +
                    block.inverse.memory_consumption();
       }
     return bytes;

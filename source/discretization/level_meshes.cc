@@ -142,10 +142,10 @@ namespace FoslsContact
   std::size_t
   LevelMeshes<dim>::memory_consumption() const
   {
-    std::size_t bytes = matrix_list_memory_consumption(matrices, sparsities);
+    std::size_t bytes = total_bytes(matrix_list_memory_consumption(matrices, sparsities));
     for (const auto &discretization : capped)
       bytes += discretization->mesh_memory_consumption() +
-               discretization->level_memory_consumption();
+               total_bytes(discretization->level_memory_consumption());
     return bytes;
   }
 

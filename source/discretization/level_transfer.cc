@@ -100,7 +100,7 @@ namespace FoslsContact
   }
 
   template <int dim>
-  std::size_t
+  LevelBytes
   LevelTransfer<dim>::memory_consumption() const
   {
     return matrix_list_memory_consumption(matrices, sparsities);

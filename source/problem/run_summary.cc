@@ -8,7 +8,9 @@
 #include <fosls_contact/problem/run_summary.h>
 #include <fosls_contact/problem/solver_choice.h>
 
+#include <algorithm>
 #include <iomanip>
+#include <numeric>
 
 namespace FoslsContact
 {
@@ -98,25 +100,62 @@ namespace FoslsContact
 
   template <int dim>
   void
-  RunSummary<dim>::add_memory(Summary &summary, const std::size_t transfer_bytes) const
+  RunSummary<dim>::add_memory(Summary &summary, const LevelBytes &transfer_bytes) const
   {
-    std::vector<std::pair<std::string, std::size_t>> memory = {
-      {"mesh and DoF handler", discretization.mesh_memory_consumption()},
-      {"level data (coupling patterns, DoF tables, roles, bounds)",
-       discretization.level_memory_consumption()},
-      {"prolongations of the uniform levels", transfer_bytes},
-      {"assembled problem (A, parts of J, vectors)", qp.memory_consumption()}};
     const SolverStatistics statistics = solver.statistics();
+    std::size_t            n_levels = discretization.n_levels();
+    if (statistics.multilevel)
+      for (const auto &entry : statistics.multilevel->memory)
+        n_levels = std::max(n_levels, entry.second.size());
+    // The discretization's levels are the uniform ones and, on an
+    // adaptively refined mesh, the active mesh: the multigrid hierarchy's
+    // finest level, below which LevelMeshes adds levels of its own. (The
+    // uniform levels' prolongations have no entry for the active mesh.)
+    const auto on_hierarchy = [&](LevelBytes bytes) {
+      const bool with_active = discretization.adaptive() && bytes.size() == discretization.n_levels();
+      const std::size_t active = with_active ? bytes.back() : 0;
+      if (with_active)
+        bytes.pop_back();
+      bytes.resize(n_levels, 0);
+      bytes.back() += active;
+      return bytes;
+    };
+    // the assembled problem is the finest level's
+    LevelBytes problem(n_levels, 0);
+    problem.back() = qp.memory_consumption();
+    std::vector<std::pair<std::string, LevelBytes>> memory = {
+      {"level data (coupling patterns, DoF tables, roles, bounds)",
+       on_hierarchy(discretization.level_memory_consumption())},
+      {"prolongations of the uniform levels", on_hierarchy(transfer_bytes)},
+      {"assembled problem (A, parts of J, vectors)", problem}};
     if (statistics.multilevel)
       memory.insert(memory.end(),
                     statistics.multilevel->memory.begin(),
                     statistics.multilevel->memory.end());
-    const MPI_Comm comm  = qp.get_communicator();
-    std::string    items = "{";
-    for (const auto &[name, bytes] : memory)
-      items += std::string(items.size() > 1 ? ", " : "") + "\"" + name + "\": " +
-               number(Utilities::MPI::sum(bytes / 1048576., comm));
-    summary["memory_mb"] = items + "}";
+
+    // (every process takes part in every sum, also one with no entries for
+    // a level: each list has the same length on all of them)
+    const MPI_Comm comm   = qp.get_communicator();
+    const auto     mb     = [&](const double bytes) { return number(bytes / 1048576.); };
+    std::string    totals = "{\"mesh and DoF handler\": " +
+                         mb(Utilities::MPI::sum(double(discretization.mesh_memory_consumption()),
+                                                comm));
+    std::string by_level = "{";
+    for (auto &[name, bytes] : memory)
+      {
+        bytes.resize(n_levels, 0);
+        std::vector<double> level_bytes(bytes.begin(), bytes.end());
+        Utilities::MPI::sum(level_bytes, comm, level_bytes);
+        std::vector<std::string> levels;
+        for (const double b : level_bytes)
+          levels.push_back(mb(b));
+        totals += ", \"" + name + "\": " +
+                  mb(std::accumulate(level_bytes.begin(), level_bytes.end(), 0.));
+        by_level += std::string(by_level.size() > 1 ? ", " : "") + "\"" + name +
+                    "\": " + json_array(levels);
+      }
+    summary["memory_mb"]          = totals + "}";
+    summary["memory_mb_by_level"] = by_level + "}";
   }
 
 

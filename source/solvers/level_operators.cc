@@ -236,25 +236,25 @@ namespace FoslsContact
   }
 
   template <int dim>
-  std::size_t
+  LevelBytes
   LevelOperators<dim>::product_memory_consumption() const
   {
-    std::size_t bytes = 0;
+    LevelBytes bytes;
     for (const GalerkinProduct &p : product)
-      bytes += p.memory_consumption();
+      bytes.push_back(p.memory_consumption());
     return bytes;
   }
 
 
   template <int dim>
-  std::size_t
+  LevelBytes
   LevelOperators<dim>::memory_consumption() const
   {
-    std::size_t bytes = 0;
+    LevelBytes bytes(std::max(coarse.size(), prolongation.size()), 0);
     for (unsigned int l = 0; l < coarse.size(); ++l)
-      bytes += coarse[l].memory_consumption();
+      bytes[l] += coarse[l].memory_consumption();
     for (unsigned int l = 0; l < prolongation.size(); ++l)
-      bytes += prolongation[l].memory_consumption() + prolongation_sparsity[l].memory_consumption();
+      bytes[l] += prolongation[l].memory_consumption() + prolongation_sparsity[l].memory_consumption();
     return bytes;
   }
 

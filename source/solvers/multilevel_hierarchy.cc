@@ -120,13 +120,14 @@ namespace FoslsContact
 
 
   template <int dim>
-  std::size_t
+  LevelBytes
   MultilevelHierarchy<dim>::memory_consumption() const
   {
-    std::size_t bytes = matrix_list_memory_consumption(rotated, rotated_sparsity);
-    for (const VertexPatches<dim> &patches : level_patches)
-      bytes += MemoryConsumption::memory_consumption(patches.patches) +
-               MemoryConsumption::memory_consumption(patches.colors);
+    LevelBytes bytes = matrix_list_memory_consumption(rotated, rotated_sparsity);
+    bytes.resize(std::max(bytes.size(), level_patches.size()), 0);
+    for (unsigned int l = 0; l < level_patches.size(); ++l)
+      bytes[l] += MemoryConsumption::memory_consumption(level_patches[l].patches) +
+                  MemoryConsumption::memory_consumption(level_patches[l].colors);
     return bytes;
   }
 

@@ -321,12 +321,12 @@ namespace FoslsContact
     shared->linear.assign(n_levels, false);
   }
 
-  std::size_t
+  LevelBytes
   PatchSmoother::memory_consumption() const
   {
-    std::size_t bytes = 0;
+    LevelBytes bytes;
     for (const PackedPatches &level : shared->levels)
-      bytes += level.memory_consumption();
+      bytes.push_back(level.memory_consumption());
     return bytes;
   }
 } // namespace FoslsContact

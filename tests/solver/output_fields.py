@@ -15,7 +15,8 @@
 #   negative, and the pressure integrated over the contact faces is the
 #   contact force (RT0's normal traction is constant on a face);
 #   summary.json's memory_by_phase has the resident memory after each phase
-#   (and its file-backed part), and its memory_mb the memory of the program's structures.
+#   (and its file-backed part), its memory_mb the memory of the program's structures,
+#   and memory_mb_by_level the same level by level.
 # - prm/steel_cylinder.prm (2 levels), a curved boundary: the VTU draws the
 #   cells with a quadratic mapping, subdivided once, so the midpoints of
 #   the boundary edges lie on the circle of radius 50 mm as well.
@@ -134,6 +135,17 @@ check(set(memory) >= {"mesh and DoF handler", "level data (coupling patterns, Do
       and sum(memory.values()) <= square["peak_rss_mb"],
       "SI square: memory_mb has the structures' memory, each positive, together below "
       "peak_rss_mb")
+by_level = square["memory_mb_by_level"]
+problem = by_level.get("assembled problem (A, parts of J, vectors)", [1])
+patches = by_level.get("multigrid: patch smoothers", [0])
+check(set(by_level) == set(memory) - {"mesh and DoF handler"}
+      and all(len(v) == square["levels"] for v in by_level.values())
+      and all(abs(sum(v) - memory[name]) <= 1e-6 * memory[name] for name, v in by_level.items())
+      and all(mb == 0 for mb in problem[:-1]) and problem[-1] > 0
+      and patches[-1] == max(patches),
+      "SI square: memory_mb_by_level has every structure but the mesh, a list over the levels "
+      "whose sum is memory_mb's; the assembled problem on the finest level only, the patch "
+      "smoothers' largest part there")
 # the multigrid solve frees the finest level's coupling pattern; the cross
 # check's active set method factorizes on it, so that run keeps it
 level_data = "level data (coupling patterns, DoF tables, roles, bounds)"

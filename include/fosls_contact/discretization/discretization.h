@@ -14,6 +14,7 @@
 
 #include <fosls_contact/discretization/level_data.h>
 #include <fosls_contact/parameters/adaptivity.h>
+#include <fosls_contact/qp/matrix_list_memory.h>
 #include <fosls_contact/scene/scene.h>
 
 #include <array>
@@ -147,11 +148,11 @@ namespace FoslsContact
     /** The bytes of the mesh (with p4est's forest) and the DoF handler. */
     std::size_t mesh_memory_consumption() const;
     /**
-     * The bytes of the level data: the coupling patterns, the tables of
-     * the DoFs at vertices and faces, roles, fixed values, bounds and
-     * rotations of every level.
+     * The bytes of the level data by level: the coupling patterns, the
+     * tables of the DoFs at vertices and faces, roles, fixed values,
+     * bounds and rotations.
      */
-    std::size_t level_memory_consumption() const;
+    LevelBytes level_memory_consumption() const;
 
     /**
      * Free the DoF coupling pattern of level @p l (LevelData::sparsity).

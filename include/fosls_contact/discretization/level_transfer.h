@@ -5,6 +5,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 
 #include <fosls_contact/discretization/discretization.h>
+#include <fosls_contact/qp/matrix_list_memory.h>
 
 #include <memory>
 
@@ -49,8 +50,8 @@ namespace FoslsContact
                     LevelVector &      dst,
                     const LevelVector &src) const;
 
-    /** The bytes of the prolongation matrices and their patterns. */
-    std::size_t memory_consumption() const;
+    /** The bytes of the prolongation matrices and their patterns, by level. */
+    LevelBytes memory_consumption() const;
 
   private:
     std::vector<std::unique_ptr<SparsityPattern>>      sparsities;

@@ -70,13 +70,15 @@ namespace FoslsContact
     /** The problem's size and how the solver did (iterations, rates, statistics). */
     void add_solver(Summary &summary) const;
     /**
-     * Where the memory goes: `memory_mb`, the bytes of the program's
+     * Where the memory goes: `memory_mb`, the megabytes of the program's
      * structures (summed over the processes) by structure: the mesh and
      * DoF handler, the level data, the uniform levels' prolongations
      * (@p transfer_bytes), the assembled problem and the solver's own
-     * (SolverStatistics::Multilevel::memory). Collective.
+     * (SolverStatistics::Multilevel::memory); `memory_mb_by_level`, the
+     * same but the mesh by level (entry l of each list: level l), whose
+     * sums are `memory_mb`'s. Collective.
      */
-    void add_memory(Summary &summary, const std::size_t transfer_bytes) const;
+    void add_memory(Summary &summary, const LevelBytes &transfer_bytes) const;
     /**
      * Print a note if @p J (of the assembled quadratic form, in the
      * scene's units) and the sum of its cellwise parts in @p indicators

@@ -4,6 +4,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
+#include <fosls_contact/qp/matrix_list_memory.h>
 #include <fosls_contact/solvers/flux_rerouting.h>
 #include <fosls_contact/solvers/galerkin_product.h>
 #include <fosls_contact/solvers/multilevel_hierarchy.h>
@@ -138,10 +139,16 @@ namespace FoslsContact
                                     const LevelVector &         v,
                                     const LevelVector &         r_coarse) const;
 
-    /** The bytes of the Galerkin products' index arrays (every level). */
-    std::size_t product_memory_consumption() const;
-    /** The bytes of the Galerkin operators and the truncated prolongations. */
-    std::size_t memory_consumption() const;
+    /**
+     * The bytes of the Galerkin products' index arrays by level (that of
+     * level l builds the operator of level l - 1).
+     */
+    LevelBytes product_memory_consumption() const;
+    /**
+     * The bytes of the Galerkin operators and the truncated prolongations
+     * by level (the operator of level l, the prolongation into it).
+     */
+    LevelBytes memory_consumption() const;
 
   private:
     /** P~ of level l: the rows of P at truncated DoFs are zero. */

@@ -7,6 +7,7 @@
 #include <fosls_contact/discretization/discretization.h>
 #include <fosls_contact/discretization/level_meshes.h>
 #include <fosls_contact/discretization/level_transfer.h>
+#include <fosls_contact/qp/matrix_list_memory.h>
 #include <fosls_contact/solvers/contact_face_relations.h>
 #include <fosls_contact/solvers/vertex_patches.h>
 
@@ -108,10 +109,10 @@ namespace FoslsContact
     }
 
     /**
-     * The bytes of the rotated prolongations and the vertex patches (the
-     * levels' own data is the discretizations').
+     * The bytes of the rotated prolongations and the vertex patches by
+     * level (the levels' own data is the discretizations').
      */
-    std::size_t memory_consumption() const;
+    LevelBytes memory_consumption() const;
 
   private:
     /** Level l: a level of a discretization, and the prolongation to it. */

@@ -5,6 +5,7 @@
 
 #include <fosls_contact/parameters/solver.h>
 #include <fosls_contact/qp/level_algebra.h>
+#include <fosls_contact/qp/matrix_list_memory.h>
 #include <fosls_contact/solvers/packed_patches.h>
 #include <fosls_contact/solvers/solver_statistics.h>
 
@@ -119,8 +120,8 @@ namespace FoslsContact
     /** Patch steps whose objective change was positive beyond round-off. */
     unsigned int energy_increases() const { return shared->n_increases; }
 
-    /** The bytes of the packed patches of all levels (shared by the copies). */
-    std::size_t memory_consumption() const;
+    /** The bytes of the packed patches by level (shared by the copies). */
+    LevelBytes memory_consumption() const;
 
     /** Number of colors of level @p l, over all processes. */
     unsigned int n_colors(const unsigned int l) const

@@ -1,6 +1,8 @@
 #ifndef fosls_contact_solvers_solver_statistics_h
 #define fosls_contact_solvers_solver_statistics_h
 
+#include <fosls_contact/qp/matrix_list_memory.h>
+
 #include <chrono>
 #include <map>
 #include <optional>
@@ -106,10 +108,10 @@ namespace FoslsContact
       double       coarse_defect_difference = 0;
       /**
        * The bytes this process holds in the solver's structures, by
-       * structure (memory_consumption() of each): what the solve adds to
-       * the memory of the assembled problem.
+       * structure (memory_consumption() of each) and level: what the solve
+       * adds to the memory of the assembled problem.
        */
-      std::vector<std::pair<std::string, std::size_t>> memory;
+      std::vector<std::pair<std::string, LevelBytes>> memory;
     };
     std::optional<Multilevel> multilevel;
   };

@@ -8,7 +8,8 @@ from the level matrices (Solver/Patch rows = matrix, this build only); with
 --base-rev, the same for another revision of the program (built here), run
 alternately with this build, and the ratios. Writes doc/scale_results.md
 (generated; doc/performance.md explains it), copies its table of the
-targets into doc/performance.md (between the markers there), and prints it.
+targets into doc/performance.md (between the markers there; not after a run
+with --max-level), and prints it.
 
     bench/scale.py                                  # this build only
     bench/scale.py --base-rev 93af7be --runs 3      # against an earlier main
@@ -109,7 +110,8 @@ def measure(binaries, scene, level, runs, threads, tag, settings):
         shift = k % len(names)
         for name in names[shift:] + names[:shift]:
             slug = tag.replace(", ", "_").replace(" ", "_")
-            out = os.path.join(RES, f"{slug}_{name}_L{level}")
+            # (a directory per run: the fastest run's files stay)
+            out = os.path.join(RES, f"{slug}_{name}_L{level}_run{k + 1}")
             s = run(scene, dict(settings, **{"Geometry/Levels": str(level)}), 1, threads, out,
                     binary=binaries[name])
             if name not in best or s["wall_s"] < best[name]["wall_s"]:
@@ -193,13 +195,13 @@ def targets(results):
     return ["## Targets\n", "| target | measured | |", "|---|---|---|"] + rows + [""]
 
 
-def start_up(binary, runs):
+def start_up(binary):
     """The wall time of `binary --version`, the fastest of @p runs: what
     every run spends before its work (the dynamic loader binding the
     symbols of deal.II and the libraries it brings, MPI_Init)."""
     best = float("inf")
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    for _ in range(max(runs, 5)):
+    for _ in range(5):
         t = time.time()
         subprocess.run([binary, "--version"], capture_output=True, check=True, env=env)
         best = min(best, time.time() - t)
@@ -264,6 +266,28 @@ def matrix_rows(results):
             "|---|---|---|---|---|---|---|---|---|---|"] + lines + [""]
 
 
+def memory_by_phase(results):
+    """The resident memory after each phase of the largest runs
+    (summary.json's memory_by_phase), its file-backed part and the peak."""
+    cases = [(tag, level) for tag, level in (("square", 9), ("cube", 6), ("cube", 7))
+             if results.get((tag, level))]
+    if not cases:
+        return []
+    lines = ["## Resident memory after each phase (MB)\n",
+             "| phase | " + " | ".join(f"{t} level {l}" for t, l in cases) + " |",
+             "|---|" + "---|" * len(cases)]
+    runs = [results[c]["this"] for c in cases]
+    for i, phase in enumerate(runs[0]["memory_by_phase"]):
+        lines.append(f"| {phase['phase']} | " +
+                     " | ".join(f"{s['memory_by_phase'][i]['rss_mb']:,.0f}" for s in runs) + " |")
+    lines.append("| of it file-backed, after the solve | " +
+                 " | ".join(f"{file_backed_mb(s):,.0f}" for s in runs) + " |")
+    lines.append("| peak (bytes per DoF) | " +
+                 " | ".join(f"{s['peak_rss_mb']:,.0f} ({s['peak_rss_mb'] * 1048576 / s['dofs']:,.0f})"
+                            for s in runs) + " |")
+    return lines + [""]
+
+
 def memory_by_level(results):
     """Where the memory of the finest run of each scene goes, level by
     level (summary.json's memory_mb_by_level), in bytes per DoF of the
@@ -292,10 +316,11 @@ def memory_by_level(results):
              "Bytes per DoF of the finest level (summary.json's `memory_mb_by_level`): each "
              "structure on the finest level, on the coarser levels together, and in all; the "
              "mesh and DoF handler hold all levels at once. The structures together are "
-             "compared with the peak resident memory without the file-backed pages; the "
-             "difference, not attributed, is what no structure reports: the solve's "
-             "temporary vectors (of the Newton step's conjugate gradients and of the cycles) "
-             "and memory the allocator keeps after the set-up freed it.\n",
+             "compared with the resident memory after the solve, when they are measured, "
+             "without the file-backed pages; the difference, not attributed, is what no "
+             "structure reports: the solve's vectors of the finest level (the Newton step's "
+             "conjugate gradients keep theirs in deal.II's vector pool) and memory the "
+             "allocator keeps after the set-up freed it.\n",
              "| structure | " + " | ".join(f"{t} level {l}: finest, coarser, all"
                                              for t, l, _ in cases) + " |",
              "|---|" + "---|" * len(cases)]
@@ -310,10 +335,11 @@ def memory_by_level(results):
                          f"{per_dof(sum(mb), s)}" if mb else "")
         lines.append(f"| {name} | " + " | ".join(cells) + " |")
     together = [sum(s["memory_mb"].values()) for _, _, s in cases]
-    rest = [s["peak_rss_mb"] - file_backed_mb(s) for _, _, s in cases]
+    after = [s["memory_by_phase"][-1] for _, _, s in cases]
+    rest = [p["rss_mb"] - p["rss_file_mb"] for p in after]
     lines.append("| the structures together | " +
                  " | ".join(per_dof(t, s) for t, (_, _, s) in zip(together, cases)) + " |")
-    lines.append("| peak without the file-backed pages | " +
+    lines.append("| resident after the solve, without the file-backed pages | " +
                  " | ".join(per_dof(r, s) for r, (_, _, s) in zip(rest, cases)) + " |")
     lines.append("| not attributed | " +
                  " | ".join(per_dof(r - t, s) for r, t, (_, _, s) in zip(rest, together, cases))
@@ -324,10 +350,12 @@ def memory_by_level(results):
 def copy_targets(text):
     """Put the section "## Targets" of @p text (scale_results.md) between
     the markers BEGIN and END of doc/performance.md."""
+    if "## Targets\n" not in text:
+        sys.exit(f"{OUT}: no section '## Targets' to copy")
     section = text.split("## Targets\n", 1)[1].split("\n## ", 1)[0].strip()
     with open(PERFORMANCE) as f:
         doc = f.read()
-    if BEGIN not in doc or END not in doc:
+    if BEGIN not in doc or END not in doc or doc.index(END) < doc.index(BEGIN):
         sys.exit(f"{PERFORMANCE}: the markers of the targets' table are missing")
     head, rest = doc.split(BEGIN, 1)
     tail = rest.split(END, 1)[1]
@@ -345,6 +373,7 @@ def main():
     binaries = {"this": os.path.join(ROOT, "build", "fosls-contact")}
     if a.base_rev:
         binaries["base"] = build_base(a.base_rev)
+    start = start_up(binaries["this"])
     results = {}
     for tag, scene, levels, growth, settings, with_base in CASES:
         previous_mb = None
@@ -429,7 +458,8 @@ def main():
                                    if results.get(("square", level))) + ".\n")
 
     lines += targets(results)
-    lines += phases(results, start_up(binaries["this"], a.runs))
+    lines += phases(results, start)
+    lines += memory_by_phase(results)
     lines += matrix_rows(results)
     lines += memory_by_level(results)
 
@@ -445,8 +475,12 @@ def main():
     text = "\n".join(lines)
     with open(OUT, "w") as f:
         f.write(text)
-    copy_targets(text)
     print(text)
+    # (a run of some levels only leaves the documented targets as they are)
+    if a.max_level >= max(max(levels) for _, _, levels, _, _, _ in CASES):
+        copy_targets(text)
+    else:
+        print(f"(--max-level: {PERFORMANCE} keeps its targets' table)")
 
 
 if __name__ == "__main__":

@@ -139,13 +139,16 @@ namespace FoslsContact
 
 
   template <int dim>
-  std::size_t
+  LevelBytes
   LevelMeshes<dim>::memory_consumption() const
   {
-    std::size_t bytes = total_bytes(matrix_list_memory_consumption(matrices, sparsities));
-    for (const auto &discretization : capped)
-      bytes += discretization->mesh_memory_consumption() +
-               total_bytes(discretization->level_memory_consumption());
+    // (capped[k] is the mesh of level n_uniform + k, the levels below it
+    // in sources those of the adaptive mesh's own discretization)
+    LevelBytes         bytes     = matrix_list_memory_consumption(matrices, sparsities);
+    const unsigned int n_uniform = matrices.size() - 1 - capped.size();
+    for (unsigned int k = 0; k < capped.size(); ++k)
+      bytes[n_uniform + k] += capped[k]->mesh_memory_consumption() +
+                              total_bytes(capped[k]->level_memory_consumption());
     return bytes;
   }
 

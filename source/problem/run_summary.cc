@@ -108,11 +108,11 @@ namespace FoslsContact
       for (const auto &entry : statistics.multilevel->memory)
         n_levels = std::max(n_levels, entry.second.size());
     // The discretization's levels are the uniform ones and, on an
-    // adaptively refined mesh, the active mesh: the multigrid hierarchy's
-    // finest level, below which LevelMeshes adds levels of its own. (The
-    // uniform levels' prolongations have no entry for the active mesh.)
-    const auto on_hierarchy = [&](LevelBytes bytes) {
-      const bool with_active = discretization.adaptive() && bytes.size() == discretization.n_levels();
+    // adaptively refined mesh, the active mesh (@p with_active, the last
+    // entry): the multigrid hierarchy's finest level, below which
+    // LevelMeshes adds levels of its own. The uniform levels'
+    // prolongations have no entry for the active mesh.
+    const auto on_hierarchy = [&](LevelBytes bytes, const bool with_active) {
       const std::size_t active = with_active ? bytes.back() : 0;
       if (with_active)
         bytes.pop_back();
@@ -125,8 +125,8 @@ namespace FoslsContact
     problem.back() = qp.memory_consumption();
     std::vector<std::pair<std::string, LevelBytes>> memory = {
       {"level data (coupling patterns, DoF tables, roles, bounds)",
-       on_hierarchy(discretization.level_memory_consumption())},
-      {"prolongations of the uniform levels", on_hierarchy(transfer_bytes)},
+       on_hierarchy(discretization.level_memory_consumption(), discretization.adaptive())},
+      {"prolongations of the uniform levels", on_hierarchy(transfer_bytes, false)},
       {"assembled problem (A, parts of J, vectors)", problem}};
     if (statistics.multilevel)
       memory.insert(memory.end(),

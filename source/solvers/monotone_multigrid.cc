@@ -72,13 +72,9 @@ namespace FoslsContact
       {"multigrid: Galerkin products (index arrays)", operators.product_memory_consumption()},
       {"multigrid: Galerkin operators, truncated prolongations", operators.memory_consumption()},
       {"multigrid: rotated prolongations, vertex patches", hierarchy.memory_consumption()}};
-    // (the meshes of the adaptive levels: the whole of them, on the finest)
     if (level_meshes)
-      {
-        LevelBytes bytes(finest + 1, 0);
-        bytes[finest] = level_meshes->memory_consumption();
-        multilevel.memory.emplace_back("multigrid: meshes of the adaptive levels", bytes);
-      }
+      multilevel.memory.emplace_back("multigrid: meshes of the adaptive levels",
+                                     level_meshes->memory_consumption());
     result.multilevel                   = multilevel;
     return result;
   }

@@ -72,17 +72,21 @@ check(len(levels) == 7 and all(b >= a for a, b in zip(levels, levels[1:])),
       label + ": 7 levels (3 uniform, 3 between, the adaptive mesh), nested")
 # memory by level on the adaptive hierarchy: the discretization's level data
 # on the uniform levels and the adaptive mesh (the finest), none on the
-# levels between (LevelMeshes' own, counted with it on the finest level);
-# the assembled problem on the finest level only
+# levels between, whose meshes (LevelMeshes' own, with their level data)
+# and prolongations are on their levels; the assembled problem on the
+# finest level only
 by_level = run["memory_mb_by_level"] or {}
 level_data = by_level.get("level data (coupling patterns, DoF tables, roles, bounds)", [])
+meshes = by_level.get("multigrid: meshes of the adaptive levels", [])
 problem = by_level.get("assembled problem (A, parts of J, vectors)", [])
 check(all(len(v) == len(levels) for v in by_level.values())
       and len(level_data) == 7 and all(mb > 0 for mb in level_data[1:3] + level_data[6:])
       and all(mb == 0 for mb in level_data[3:6])
+      and len(meshes) == 7 and all(mb == 0 for mb in meshes[:3]) and all(mb > 0 for mb in meshes[3:])
       and len(problem) == 7 and problem[-1] > 0 and all(mb == 0 for mb in problem[:-1]),
       label + ": memory_mb_by_level has a list per level of the hierarchy; the level data "
-      "on the uniform levels and the adaptive mesh, the assembled problem on the finest")
+      "on the uniform levels and the adaptive mesh, the meshes between on theirs, the "
+      "assembled problem on the finest")
 
 label = "l_shape_singular, 8 steps"
 run = R.run("prm/l_shape_singular.prm", multigrid + ["Adaptivity/Steps=8"], "l_shape")

@@ -70,8 +70,11 @@ namespace FoslsContact
       return *sources[l].prolongation;
     }
 
-    /** The bytes of the meshes of their own and the prolongations. */
-    std::size_t memory_consumption() const;
+    /**
+     * The bytes of the meshes of their own (each with its level data) and
+     * the prolongations, by level.
+     */
+    LevelBytes memory_consumption() const;
 
   private:
     /**

@@ -75,8 +75,9 @@ namespace FoslsContact
      * DoF handler, the level data, the uniform levels' prolongations
      * (@p transfer_bytes), the assembled problem and the solver's own
      * (SolverStatistics::Multilevel::memory); `memory_mb_by_level`, the
-     * same but the mesh by level (entry l of each list: level l), whose
-     * sums are `memory_mb`'s. Collective.
+     * same without the mesh and DoF handler by level of the multigrid
+     * hierarchy (entry l of each list: level l), whose sums are
+     * `memory_mb`'s. Collective.
      */
     void add_memory(Summary &summary, const LevelBytes &transfer_bytes) const;
     /**

@@ -195,6 +195,13 @@ def targets(results):
     return ["## Targets\n", "| target | measured | |", "|---|---|---|"] + rows + [""]
 
 
+def largest_runs(results):
+    """The runs whose wall time and memory the tables break down: the
+    square's level 9 and the cube's levels 6 and 7, those that ran."""
+    return [(tag, level) for tag, level in (("square", 9), ("cube", 6), ("cube", 7))
+            if results.get((tag, level))]
+
+
 def start_up(binary):
     """The wall time of `binary --version`, the fastest of @p runs: what
     every run spends before its work (the dynamic loader binding the
@@ -213,8 +220,7 @@ def phases(results, start):
     start, seconds), the sections of summary.json's time_sections_s, and
     what is left (the data checks, the output, which is written after
     summary.json, the end of the process)."""
-    cases = [(tag, level) for tag, level in (("square", 9), ("cube", 6), ("cube", 7))
-             if results.get((tag, level))]
+    cases = largest_runs(results)
     if not cases:
         return []
     names = ["Setup: mesh, DoFs, levels", "Assembly", "Definiteness check", "Setup: solver",
@@ -269,8 +275,7 @@ def matrix_rows(results):
 def memory_by_phase(results):
     """The resident memory after each phase of the largest runs
     (summary.json's memory_by_phase), its file-backed part and the peak."""
-    cases = [(tag, level) for tag, level in (("square", 9), ("cube", 6), ("cube", 7))
-             if results.get((tag, level))]
+    cases = largest_runs(results)
     if not cases:
         return []
     lines = ["## Resident memory after each phase (MB)\n",

@@ -393,13 +393,14 @@ namespace FoslsContact
     LevelBytes bytes(levels.size(), 0);
     for (const LevelData<dim> &data : levels)
       {
-        bytes[data.level] += data.sparsity.memory_consumption() + data.role.capacity() * sizeof(DoFRole) +
+        std::size_t &level = bytes[data.level];
+        level += data.sparsity.memory_consumption() + data.role.capacity() * sizeof(DoFRole) +
                  data.fixed_values.memory_consumption() + data.upper_bounds.memory_consumption() +
                  memory_consumption(data.rotation_of_dof) +
                  (data.vertex_dofs.capacity() + data.face_dofs.capacity()) *
                    sizeof(typename LevelData<dim>::DofsAt::value_type);
         for (const RotationBlock<dim> &block : data.rotations)
-          bytes[data.level] += sizeof(block) + block.matrix.memory_consumption() +
+          level += sizeof(block) + block.matrix.memory_consumption() +
                    block.inverse.memory_consumption();
       }
     return bytes;

@@ -254,7 +254,8 @@ namespace FoslsContact
     for (unsigned int l = 0; l < coarse.size(); ++l)
       bytes[l] += coarse[l].memory_consumption();
     for (unsigned int l = 0; l < prolongation.size(); ++l)
-      bytes[l] += prolongation[l].memory_consumption() + prolongation_sparsity[l].memory_consumption();
+      bytes[l] +=
+        prolongation[l].memory_consumption() + prolongation_sparsity[l].memory_consumption();
     return bytes;
   }
 

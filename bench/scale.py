@@ -122,6 +122,11 @@ def measure(binaries, scene, level, runs, threads, tag, settings):
     return best
 
 
+def bytes_per_dof(mb, summary):
+    """@p mb megabytes per DoF of the run of @p summary, in bytes."""
+    return mb * 1024 * 1024 / summary["dofs"]
+
+
 def file_backed_mb(summary):
     """The file-backed resident memory after the last phase (MB; None where
     the build does not report it)."""
@@ -173,7 +178,7 @@ def targets(results):
     for tag in ("square", SQUARE_MATRIX_ROWS, "cube", MATRIX_ROWS):
         level, s = finest(results, tag)
         if s:
-            per_dof = s["peak_rss_mb"] * 1024 * 1024 / s["dofs"]
+            per_dof = bytes_per_dof(s["peak_rss_mb"], s)
             limit = TARGETS["bytes_per_dof"][tag]
             row(f"peak memory <= {limit} bytes per DoF, {tag} (finest level measured)",
                 f"{per_dof:.0f} (level {level})", per_dof <= limit)
@@ -203,7 +208,7 @@ def largest_runs(results):
 
 
 def start_up(binary):
-    """The wall time of `binary --version`, the fastest of @p runs: what
+    """The wall time of `binary --version`, the fastest of 5 runs: what
     every run spends before its work (the dynamic loader binding the
     symbols of deal.II and the libraries it brings, MPI_Init)."""
     best = float("inf")
@@ -259,7 +264,7 @@ def matrix_rows(results):
                      f"{m['time_solve_s'] / c['time_solve_s']:.2f} | "
                      f"{smoothing[1] / smoothing[0]:.2f} | {m['wall_s'] / c['wall_s']:.2f} | "
                      f"{c['peak_rss_mb']:.0f} | {m['peak_rss_mb']:.0f} | "
-                     f"{m['peak_rss_mb'] * 1024 * 1024 / m['dofs']:.0f} | {peak_phase} |")
+                     f"{bytes_per_dof(m['peak_rss_mb'], m):.0f} | {peak_phase} |")
     if not lines:
         return []
     return ["## The cube with the patch rows read from the level matrices\n",
@@ -288,7 +293,7 @@ def memory_by_phase(results):
     lines.append("| of it file-backed, after the solve | " +
                  " | ".join(f"{file_backed_mb(s):,.0f}" for s in runs) + " |")
     lines.append("| peak (bytes per DoF) | " +
-                 " | ".join(f"{s['peak_rss_mb']:,.0f} ({s['peak_rss_mb'] * 1048576 / s['dofs']:,.0f})"
+                 " | ".join(f"{s['peak_rss_mb']:,.0f} ({bytes_per_dof(s['peak_rss_mb'], s):,.0f})"
                             for s in runs) + " |")
     return lines + [""]
 
@@ -297,11 +302,11 @@ def memory_by_level(results):
     """Where the memory of the finest run of each scene goes, level by
     level (summary.json's memory_mb_by_level), in bytes per DoF of the
     finest level: each structure on the finest level and on the coarser
-    ones together; what the structures hold together against the peak
-    without the file-backed pages; the difference is what no structure
-    reports: the solve's temporary vectors and the memory the allocator
-    keeps after the set-up freed it."""
-    rows, cases = {}, []
+    ones together; what the structures hold together against the resident
+    memory after the solve without the file-backed pages; the difference
+    is what no structure reports: the solve's temporary vectors and the
+    memory the allocator keeps after the set-up freed it."""
+    cases = []
     for tag in ("square", SQUARE_MATRIX_ROWS, "cube", MATRIX_ROWS):
         level, s = finest(results, tag)
         if not s or "memory_mb_by_level" not in s or file_backed_mb(s) is None:
@@ -315,7 +320,7 @@ def memory_by_level(results):
                   if n not in names]
 
     def per_dof(mb, s):
-        return f"{mb * 1024 * 1024 / s['dofs']:.0f}"
+        return f"{bytes_per_dof(mb, s):.0f}"
 
     lines = ["## Memory by level\n",
              "Bytes per DoF of the finest level (summary.json's `memory_mb_by_level`): each "
@@ -417,18 +422,18 @@ def main():
             lines.append(f"| {tag} | {level} | skipped (memory) |" + " |" * (len(header) - 3))
             continue
         s = best["this"]
-        per_dof = s["peak_rss_mb"] * 1024 * 1024 / s["dofs"]
+        per_dof = bytes_per_dof(s["peak_rss_mb"], s)
         row = [tag, level, s["dofs"], f"{s['wall_s']:.2f}", f"{s['time_solve_s']:.2f}",
                f"{s['time_setup_s']:.2f}", f"{s['wall_s'] / s['time_solve_s']:.2f}",
                f"{s['peak_rss_mb']:.0f}", f"{per_dof:.0f}"]
         file_mb = file_backed_mb(s)
-        row += [f"{file_mb:.0f}", f"{(s['peak_rss_mb'] - file_mb) * 1024 * 1024 / s['dofs']:.0f}"] \
+        row += [f"{file_mb:.0f}", f"{bytes_per_dof(s['peak_rss_mb'] - file_mb, s):.0f}"] \
             if file_mb is not None else ["", ""]
         if a.base_rev and "base" not in best:
             row += ["", "", "", ""]
         elif a.base_rev:
             b = best["base"]
-            b_per_dof = b["peak_rss_mb"] * 1024 * 1024 / b["dofs"]
+            b_per_dof = bytes_per_dof(b["peak_rss_mb"], b)
             row += [f"{b['wall_s']:.2f}", f"{b_per_dof:.0f}", f"{s['wall_s'] / b['wall_s']:.2f}",
                     f"{per_dof / b_per_dof:.2f}"]
         lines.append("| " + " | ".join(str(x) for x in row) + " |")
@@ -472,8 +477,7 @@ def main():
     for (tag, level), best in results.items():
         if best and "memory_mb" in best["this"]:
             memory = best["this"]["memory_mb"]
-            dofs = best["this"]["dofs"]
-            parts = ", ".join(f"{k} {v * 1024 * 1024 / dofs:.0f}" for k, v in
+            parts = ", ".join(f"{k} {bytes_per_dof(v, best['this']):.0f}" for k, v in
                               sorted(memory.items(), key=lambda kv: -kv[1]))
             lines.append(f"- {tag} level {level}, bytes per DoF by structure: {parts}")
     lines.append("")

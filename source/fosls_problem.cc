@@ -39,9 +39,15 @@ namespace FoslsContact
   {
     TimerOutput::Scope t(timer, "Setup: mesh, DoFs, levels");
     Timer              wall;
-    discretization = std::make_unique<Discretization<dim>>(scene,
+    // adaptive refinement needs the whole mesh on every process
+    // (Discretization explains why); a uniform mesh is partitioned
+    using Distribution = typename Discretization<dim>::MeshDistribution;
+    discretization     = std::make_unique<Discretization<dim>>(scene,
                                                           parameters.geometry.levels,
-                                                          MPI_COMM_WORLD);
+                                                          MPI_COMM_WORLD,
+                                                          parameters.adaptivity.enabled() ?
+                                                            Distribution::replicated :
+                                                            Distribution::partitioned);
     transfer = std::make_unique<LevelTransfer<dim>>(*discretization);
     time_setup += wall.wall_time();
 
@@ -374,6 +380,15 @@ namespace FoslsContact
     for (auto &s : step_solutions)
       functions.push_back(&s);
     const bool refined = discretization->refine(criteria, marking, functions);
+    if (refined)
+      {
+        // the solver's hierarchy refers to the levels just replaced (freed
+        // before the next one is built); the uniform levels' DoFs were
+        // distributed again, and a replicated mesh, partitioned anew,
+        // numbers them anew, so their prolongations are built again
+        solver.reset();
+        transfer = std::make_unique<LevelTransfer<dim>>(*discretization);
+      }
     time_setup += wall.wall_time();
     return refined;
   }
@@ -450,11 +465,6 @@ namespace FoslsContact
   std::string
   FoslsProblem<dim>::run()
   {
-    // (a parameter error, before any work: Discretization explains why)
-    AssertThrow(!parameters.adaptivity.enabled() ||
-                  Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1,
-                ExcMessage("parameter 'Adaptivity/Steps' > 0 runs on one MPI process, not " +
-                           std::to_string(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD))));
     // an unusable output directory is found before the work, not after it
     OutputDirectory output(parameters.output.directory, MPI_COMM_WORLD);
     // one line as each phase ends, so that a long run shows where it is

@@ -378,7 +378,26 @@ namespace FoslsContact
     //
     // An exception in a worker is kept and thrown after the loop
     // (WorkerExceptions).
-    WorkerExceptions errors;
+    WorkerExceptions   errors;
+    const unsigned int n_owned = data.n_owned();
+    // Whether a cell's terms reach an owned row: one of its DoFs, or a
+    // master of one of its hanging DoFs, is owned. Only such cells (and the
+    // owned ones, for J's constant) are computed: on a mesh held whole by
+    // every process (Discretization::MeshDistribution) every cell is here,
+    // and the others would be computed to be thrown away.
+    const auto reaches_owned_row = [&](const std::vector<types::global_dof_index> &dofs) {
+      for (const auto dof : dofs)
+        {
+          if (dof < n_owned)
+            return true;
+          const auto h = data.hanging.find(dof);
+          if (h != data.hanging.end())
+            for (const auto &master : h->second)
+              if (master.first < n_owned)
+                return true;
+        }
+      return false;
+    };
     auto worker = [&](const auto &cell, AssemblyScratch<dim> &scratch, AssemblyCopy &copy) {
       copy.valid = false;
       if (data.active_mesh ? cell->is_artificial() : !Discretization<dim>::is_present(cell))
@@ -387,10 +406,12 @@ namespace FoslsContact
           if (copy.dofs.size() != n) // (grown by eliminate_hanging() for another cell)
             copy = AssemblyCopy(n);
           copy.owned = data.owns(cell);
+          data.get_local_dofs(cell, copy.dofs);
+          if (!copy.owned && !reaches_owned_row(copy.dofs))
+            return;
           const typename Triangulation<dim>::cell_iterator tria_cell(cell);
           cell_terms(tria_cell, scratch, copy);
           contact_terms(tria_cell, scratch, copy);
-          data.get_local_dofs(cell, copy.dofs);
           if (eliminate_hanging_dofs_of_cell(data,
                                              copy.dofs,
                                              {&copy.k_eq, &copy.k_const, &copy.k_compl},
@@ -433,7 +454,6 @@ namespace FoslsContact
     // Only the owned rows are summed here; every cell at an owned DoF is
     // here (owned or ghost), so they are complete. The ghost rows the
     // patches need come from their owners (compress_matrices()).
-    const unsigned int  n_owned = data.n_owned();
     std::vector<double> row; // (the copier's: a row of a cell's matrix, by sorted column)
     auto copier = [&](const AssemblyCopy &copy) {
       if (!copy.valid)

@@ -1,5 +1,6 @@
 #include <deal.II/base/memory_consumption.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_raviart_thomas.h>
@@ -14,6 +15,7 @@
 #include <fosls_contact/discretization/level_dof_numbering.h>
 #include <fosls_contact/discretization/refinement_marking.h>
 #include <fosls_contact/discretization/refinement_transfer.h>
+#include <fosls_contact/discretization/replicated_triangulation.h>
 #include <fosls_contact/output/collective_error.h>
 
 #include <algorithm>
@@ -25,20 +27,44 @@
 
 namespace FoslsContact
 {
+  namespace
+  {
+    /**
+     * An empty mesh held as @p distribution says, with multigrid levels and
+     * at most one level of difference at a vertex (distribute_mg_dofs()
+     * needs it; on a replicated mesh it is also the 2:1 balance p4est
+     * gives a partitioned one, so the two refine alike).
+     */
+    template <int dim>
+    std::unique_ptr<parallel::TriangulationBase<dim>>
+    make_triangulation(const typename Discretization<dim>::MeshDistribution distribution,
+                       const MPI_Comm                                       comm)
+    {
+      const auto smoothing = Triangulation<dim>::limit_level_difference_at_vertices;
+      if (distribution == Discretization<dim>::MeshDistribution::partitioned)
+        return std::make_unique<parallel::distributed::Triangulation<dim>>(
+          comm,
+          smoothing,
+          parallel::distributed::Triangulation<dim>::construct_multigrid_hierarchy);
+      return std::make_unique<ReplicatedTriangulation<dim>>(comm, smoothing);
+    }
+  } // namespace
+
+
   template <int dim>
-  Discretization<dim>::Discretization(const Scene<dim> &scene,
-                                      const unsigned int n_levels,
-                                      const MPI_Comm     comm)
+  Discretization<dim>::Discretization(const Scene<dim> &     scene,
+                                      const unsigned int     n_levels,
+                                      const MPI_Comm         comm,
+                                      const MeshDistribution distribution)
     : scene(scene)
-    , triangulation(comm,
-                    Triangulation<dim>::limit_level_difference_at_vertices,
-                    parallel::distributed::Triangulation<dim>::construct_multigrid_hierarchy)
+    , distribution(distribution)
+    , triangulation(make_triangulation<dim>(distribution, comm))
     , fe(FE_Q<dim>(1), dim, FE_RaviartThomas<dim>(0), dim)
     , mapping(1)
   {
     {
       // the coarse mesh is built serially (on every process, identically)
-      // and handed to p4est by its description and manifolds, not by
+      // and handed over by its description and manifolds, not by
       // copy_triangulation(): that would replace the mesh smoothing the
       // distributed mesh got above with the serial mesh's, and multigrid
       // DoFs need limit_level_difference_at_vertices (distribute_mg_dofs()
@@ -47,18 +73,18 @@ namespace FoslsContact
       scene.make_coarse_mesh(coarse);
       coarse_ratio           = Scene<dim>::mesh_size_ratio(coarse);
       const auto description = GridTools::get_coarse_mesh_description(coarse);
-      triangulation.create_triangulation(std::get<0>(description),
+      triangulation->create_triangulation(std::get<0>(description),
                                          std::get<1>(description),
                                          std::get<2>(description));
       for (const types::manifold_id id : coarse.get_manifold_ids())
         if (id != numbers::flat_manifold_id)
-          triangulation.set_manifold(id, coarse.get_manifold(id));
+          triangulation->set_manifold(id, coarse.get_manifold(id));
     }
-    triangulation.refine_global(n_levels - 1);
-    scene.check_cell_shapes(triangulation, comm);
+    triangulation->refine_global(n_levels - 1);
+    scene.check_cell_shapes(*triangulation, comm);
 
-    n_uniform = triangulation.n_global_levels();
-    dof_handler.reinit(triangulation);
+    n_uniform = triangulation->n_global_levels();
+    dof_handler.reinit(*triangulation);
     setup_dofs_and_levels();
   }
 
@@ -69,14 +95,19 @@ namespace FoslsContact
   {
     dof_handler.distribute_dofs(fe);
     dof_handler.distribute_mg_dofs();
-    for (unsigned int l = 0; l < n_uniform; ++l)
-      dof_handler.renumber_dofs(l, LevelDoFNumbering<dim>(dof_handler).level_renumbering(l));
+    // The geometric level numbering is for the smoother's memory access
+    // only (LevelDoFNumbering); deal.II 9.4 renumbers no level of a
+    // parallel::shared mesh (measured: the level then has no DoFs), so the
+    // levels of a replicated mesh keep deal.II's numbering.
+    if (distribution == MeshDistribution::partitioned)
+      for (unsigned int l = 0; l < n_uniform; ++l)
+        dof_handler.renumber_dofs(l, LevelDoFNumbering<dim>(dof_handler).level_renumbering(l));
     active_partitioner = std::make_shared<const Utilities::MPI::Partitioner>(
       dof_handler.locally_owned_dofs(),
       DoFTools::extract_locally_relevant_dofs(dof_handler),
       get_communicator());
 
-    const bool refined = triangulation.n_global_levels() > n_uniform;
+    const bool refined = triangulation->n_global_levels() > n_uniform;
     levels.clear();
     levels.resize(n_uniform + (refined ? 1 : 0));
     for (unsigned int l = 0; l < levels.size(); ++l)
@@ -94,15 +125,15 @@ namespace FoslsContact
                               const Parameters::Adaptivity &     adaptivity,
                               const std::vector<LevelVector *> &carried)
   {
-    AssertThrow(Utilities::MPI::n_mpi_processes(get_communicator()) == 1,
-                ExcMessage("adaptive refinement ('Adaptivity/Steps' > 0) runs on one MPI "
-                           "process"));
-    if (!mark_for_refinement(triangulation, criteria, adaptivity, dof_handler.n_dofs()))
+    AssertThrow(distribution == MeshDistribution::replicated,
+                ExcMessage("Discretization::refine(): the mesh is not replicated"));
+    if (!mark_for_refinement(dynamic_cast<ReplicatedTriangulation<dim> &>(*triangulation),
+                             criteria, adaptivity, dof_handler.n_dofs()))
       return false;
     std::vector<RefinementTransfer<dim>> carry(carried.size());
     for (unsigned int i = 0; i < carried.size(); ++i)
       carry[i].prepare(dof_handler, *carried[i]);
-    triangulation.execute_coarsening_and_refinement();
+    triangulation->execute_coarsening_and_refinement();
     setup_dofs_and_levels();
     for (unsigned int i = 0; i < carried.size(); ++i)
       carry[i].interpolate(dof_handler, mapping, active_partitioner, *carried[i]);
@@ -114,13 +145,12 @@ namespace FoslsContact
   void
   Discretization<dim>::refine_as(const Triangulation<dim> &fine, const unsigned int mesh_level)
   {
-    AssertThrow(Utilities::MPI::n_mpi_processes(get_communicator()) == 1,
-                ExcMessage("the levels of an adaptively refined mesh are built on one MPI "
-                           "process"));
+    AssertThrow(distribution == MeshDistribution::replicated,
+                ExcMessage("Discretization::refine_as(): the mesh is not replicated"));
     for (;;)
       {
         bool flagged = false;
-        for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &cell : triangulation->active_cell_iterators())
           if (static_cast<unsigned int>(cell->level()) < mesh_level &&
               fine.create_cell_iterator(cell->id())->has_children())
             {
@@ -129,7 +159,7 @@ namespace FoslsContact
             }
         if (!flagged)
           break;
-        triangulation.execute_coarsening_and_refinement();
+        triangulation->execute_coarsening_and_refinement();
       }
     setup_dofs_and_levels();
   }
@@ -157,7 +187,7 @@ namespace FoslsContact
     CollectiveError::run(comm, [&]() {
       boundary = BoundaryFaceConditions<dim>(scene, mapping, dof_handler).apply(l, data);
     });
-    const ContactEntities<dim> contact(scene, triangulation);
+    const ContactEntities<dim> contact(scene, *triangulation);
     contact.set_contact_vertices(data, boundary);
     if (data.active_mesh)
       eliminate_hanging_dofs(dof_handler, hanging_constraints, data);
@@ -180,12 +210,12 @@ namespace FoslsContact
       {
         data.n_dofs      = dof_handler.n_dofs();
         data.partitioner = active_partitioner;
-        int coarsest = triangulation.n_global_levels();
-        for (const auto &cell : triangulation.active_cell_iterators())
+        int coarsest = triangulation->n_global_levels();
+        for (const auto &cell : triangulation->active_cell_iterators())
           if (cell->is_locally_owned())
             coarsest = std::min(coarsest, cell->level());
         coarsest = Utilities::MPI::min(coarsest, get_communicator());
-        data.refinement_ratio = std::pow(2., triangulation.n_global_levels() - 1 - coarsest);
+        data.refinement_ratio = std::pow(2., triangulation->n_global_levels() - 1 - coarsest);
       }
     else
       {
@@ -210,8 +240,8 @@ namespace FoslsContact
     // its vertices and faces; the first cell at one enters it.
     using Entry = typename LevelData<dim>::DofsAt::value_type;
     typename LevelData<dim>::DofsAt::sequence_type vertices, faces;
-    std::vector<bool> vertex_entered(triangulation.n_vertices(), false);
-    std::vector<bool> face_entered(triangulation.n_raw_faces(), false);
+    std::vector<bool> vertex_entered(triangulation->n_vertices(), false);
+    std::vector<bool> face_entered(triangulation->n_raw_faces(), false);
     std::vector<types::global_dof_index> dofs;
     std::array<Entry, GeometryInfo<dim>::vertices_per_cell> cell_vertices;
     std::array<Entry, GeometryInfo<dim>::faces_per_cell>    cell_faces;
@@ -265,7 +295,7 @@ namespace FoslsContact
     for (unsigned int i = 0; i < n_owned; ++i)
       held[i] = true;
     std::vector<bool> &owned_vertex = data.owned_cell_vertices;
-    owned_vertex.assign(triangulation.n_vertices(), false);
+    owned_vertex.assign(triangulation->n_vertices(), false);
     data.for_each_cell(dof_handler, [&](const auto &cell) {
       if (data.owns(cell))
         for (const unsigned int v : cell->vertex_indices())
@@ -364,7 +394,7 @@ namespace FoslsContact
       if (cell->is_locally_owned())
         {
           const typename DoFHandler<dim>::level_cell_iterator level_cell(
-            &triangulation, cell->level(), cell->index(), &dof_handler);
+            triangulation.get(), cell->level(), cell->index(), &dof_handler);
           level_cell->get_mg_dof_indices(level_dofs);
           cell->get_dof_indices(active_dofs);
           for (unsigned int i = 0; i < level_dofs.size(); ++i)
@@ -381,7 +411,7 @@ namespace FoslsContact
   std::size_t
   Discretization<dim>::mesh_memory_consumption() const
   {
-    return triangulation.memory_consumption() + dof_handler.memory_consumption();
+    return triangulation->memory_consumption() + dof_handler.memory_consumption();
   }
 
 

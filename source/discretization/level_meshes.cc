@@ -46,9 +46,11 @@ namespace FoslsContact
       sources[l] = {&discretization, l, l > 0 ? &transfer.prolongation(l) : nullptr};
     for (unsigned int l = n_uniform; l < finest; ++l)
       {
-        capped.push_back(std::make_unique<Discretization<dim>>(discretization.get_scene(),
-                                                               n_uniform,
-                                                               discretization.get_communicator()));
+        capped.push_back(
+          std::make_unique<Discretization<dim>>(discretization.get_scene(),
+                                                n_uniform,
+                                                discretization.get_communicator(),
+                                                discretization.get_mesh_distribution()));
         capped.back()->refine_as(discretization.get_triangulation(), l);
         sources[l] = {capped.back().get(), capped.back()->finest_level(), nullptr};
       }

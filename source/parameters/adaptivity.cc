@@ -17,15 +17,20 @@ namespace FoslsContact
                         "is J), marks cells, refines them (hanging nodes, at most one level "
                         "of difference at a vertex), carries the solution over to the new "
                         "mesh (projected onto its contact constraints) and solves from it. "
-                        "0: uniform refinement only. Needs one MPI process and Solver/Type = "
-                        "monotone multigrid (on one level per mesh level of the adaptive "
-                        "mesh) or active set.");
+                        "0: uniform refinement only. Needs Solver/Type = monotone multigrid "
+                        "(on one level per mesh level of the adaptive mesh) or active set. "
+                        "On several MPI processes every process holds the whole mesh and "
+                        "works on its share of the cells (doc/parallel.md).");
       prm.declare_entry("Marking",
                         "bulk",
                         Patterns::Selection("bulk|fixed fraction"),
                         "bulk (Dörfler): refine the fewest cells whose eta_T^2 sum to at "
                         "least Fraction times J; fixed fraction: refine the Fraction of the "
-                        "cells with the largest eta_T (rounded up: at least one cell).");
+                        "cells with the largest eta_T (rounded up: at least one cell). Either "
+                        "way the cells whose eta_T^2 is within 0.1% of the smallest one "
+                        "marked are marked too, so that mirror images are refined together "
+                        "and indicators that differ only in their last digits (runs on "
+                        "different numbers of processes) mark the same cells.");
       prm.declare_entry("Fraction",
                         "0.5",
                         Patterns::Double(0, 1),

@@ -14,7 +14,7 @@
 #   node master or a coarse obstacle that is not one stops far above);
 # - the number of cycles does not grow with the adaptive steps: no step
 #   above 1.6 times the first (uniform) mesh's (measured on the half disc
-#   48, 48, 37, 66, 39 over 4 steps, 7 levels; on the L-shape 10 to 14
+#   47, 48, 37, 68, 40 over 4 steps, 7 levels; on the L-shape 10 to 14
 #   over 8 steps, 11 levels, where uniform meshes take 10 on every level;
 #   a hierarchy whose coarse levels miss the refined region would take
 #   more cycles with every level);

@@ -7,7 +7,7 @@
 #   DoFs, and sqrt(J) falls from step to step;
 # - the relative L2 error of the pressure against Hertz's formula, above
 #   5% on the starting mesh (measured 0.063), is at most 1% on the last
-#   mesh (measured 0.0038 at 111,980 DoFs): the indicators refine toward
+#   mesh (measured 0.0038 at 114,482 DoFs): the indicators refine toward
 #   the edge of the contact zone, where the pressure has its square-root
 #   edge (uniform refinement is at 1.5% with 1.6 million DoFs);
 # - on the last mesh the last contact vertex in contact and the next one

@@ -5,9 +5,9 @@
 # - uniform refinement converges like N^(-1/3) (the singularity; slope of
 #   the H1 x H(div) error against the DoFs above -0.4, measured -0.34), and
 #   the adaptive loop restores N^(-1/2) (slope below -0.45 from step 5 to
-#   15, measured -0.56);
+#   15, measured -0.55);
 # - the estimator: the efficiency index sqrt(J) / error stays in [0.35,
-#   0.45] at every adaptive step (measured 0.378 to 0.402) down to cells
+#   0.45] at every adaptive step (measured 0.381 to 0.403) down to cells
 #   of 2^-17 of the domain at the corner. Two bugs showed here: the round-off
 #   rule of the assembled matrix dropped genuine constitutive couplings of
 #   such cells (their RT fluxes have an equilibrium diagonal C_eq h^-2): J
@@ -17,12 +17,12 @@
 # - J, a quadratic form of the assembled matrix, agrees with the sum of
 #   its cellwise parts eta_T^2 (quadrature of the residuals): to 1e-3 on
 #   the deepest mesh (measured 1e-4), and to 1e-2 with C_eq = 1e6
-#   (measured 8e-4; a round-off rule relative to sqrt(a_ii a_jj) alone
-#   gives J = -0.0084 against a sum of +0.0084);
-# - where they part by more than 1e-3 (C_eq = 1e6 after 10 steps: 5e-3),
+#   (measured 3e-4 after 6 steps; a round-off rule relative to
+#   sqrt(a_ii a_jj) alone gives J = -0.0084 against a sum of +0.0084);
+# - where they part by more than 1e-3 (C_eq = 1e6 after 8 steps: 2e-3),
 #   the run prints a note naming the accurate value, and only there;
 # - fixed-fraction marking with a Fraction below one cell refines a cell
-#   per step (deal.II rounds the number of cells down, to none).
+#   per step (ceil(Fraction N), not its floor, which would be none).
 import math
 import os
 import sys
@@ -89,16 +89,16 @@ check(note not in run.screen, label + ": no note on J's round-off")
 
 # a large equilibrium weight: the equilibrium diagonal C_eq h^-2 far above
 # the constitutive couplings
-label = "adaptive, C_eq = 1e6, 8 steps"
-run = R.run(scene, ["Adaptivity/Steps=8", "Functional weights/C_eq=1e6"], "large_C_eq")
+label = "adaptive, C_eq = 1e6, 6 steps"
+run = R.run(scene, ["Adaptivity/Steps=6", "Functional weights/C_eq=1e6"], "large_C_eq")
 check(run.ok() and run["converged"] is True, label + ": exit code 0, converged")
 functional_agrees(run, label, 1e-2)
 check(note not in run.screen, label + ": no note on J's round-off (below 1e-3)")
 
-# two steps more: the round-off of the form reaches 5e-3 of J, and the run
-# says so
-label = "adaptive, C_eq = 1e6, 10 steps"
-run = R.run(scene, ["Adaptivity/Steps=10", "Functional weights/C_eq=1e6"], "large_C_eq_deeper")
+# two steps more: the round-off of the form reaches 2e-3 of J, and the
+# run says so
+label = "adaptive, C_eq = 1e6, 8 steps"
+run = R.run(scene, ["Adaptivity/Steps=8", "Functional weights/C_eq=1e6"], "large_C_eq_deeper")
 J, parts = run["functional"], (run["error_indicators"] or {}).get("sum")
 if J is not None and parts:
     print("%s: J %s, sum of eta_T^2 %s, relative difference %s" % (

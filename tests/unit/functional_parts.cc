@@ -41,7 +41,13 @@ check_parts(const std::string &name,
   const Parameters::AllParameters parameters =
     make_parameters(scene_file(file), {{"Geometry/Levels", std::to_string(levels)}});
   const Scene<dim>    scene(parameters);
-  Discretization<dim> discretization(scene, levels, MPI_COMM_WORLD);
+  // (adaptive refinement needs the mesh on every process whole)
+  Discretization<dim> discretization(scene,
+                                     levels,
+                                     MPI_COMM_WORLD,
+                                     refine_contact_zone ?
+                                       Discretization<dim>::MeshDistribution::replicated :
+                                       Discretization<dim>::MeshDistribution::partitioned);
   if (refine_contact_zone)
     {
       // the cells at Gamma_C (with a marked criterion, the others 0)

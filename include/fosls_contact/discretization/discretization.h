@@ -3,7 +3,7 @@
 
 #include <deal.II/base/partitioner.h>
 #include <deal.II/base/point.h>
-#include <deal.II/distributed/tria.h>
+#include <deal.II/distributed/tria_base.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
@@ -19,6 +19,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -39,33 +40,51 @@ namespace FoslsContact
    * An adaptively refined mesh (refine(), Adaptivity) adds its active mesh
    * as the finest level, in the active numbering, with its hanging nodes
    * eliminated (LevelData::hanging); the uniform levels below it stay.
-   * Hanging nodes need the neighbours of the coarse side of every refined
-   * face, which a ghost layer does not always hold, so adaptive refinement
-   * runs on one process.
    *
-   * The mesh is a parallel::distributed::Triangulation (p4est) with
-   * multigrid levels, distributed over the processes of @p comm; with one
-   * process it is the whole mesh. On every level a process owns the cells
-   * p4est gives it (a coarse cell belongs to the owner of its first child)
-   * and sees the ghost cells around them; measured (2D and 3D, 1 to 3
-   * processes): the cells around every vertex of an owned cell, the
-   * children of owned cells and the parents of ghost cells are always
-   * there. That is what the level data, the patches and the transfer
-   * below rely on.
+   * How the mesh is held (MeshDistribution):
+   * - partitioned: a parallel::distributed::Triangulation (p4est) with
+   *   multigrid levels, distributed over the processes of @p comm. On
+   *   every level a process owns the cells p4est gives it (a coarse cell
+   *   belongs to the owner of its first child) and sees the ghost cells
+   *   around them; measured (2D and 3D, 1 to 3 processes): the cells
+   *   around every vertex of an owned cell, the children of owned cells
+   *   and the parents of ghost cells are always there. That is what the
+   *   level data, the patches and the transfer below rely on.
+   * - replicated: every process holds the whole mesh
+   *   (ReplicatedTriangulation), and the cells (and so the DoFs) are
+   *   divided among the processes in Z-order. Adaptive
+   *   refinement needs it. A hanging DoF's masters lie on the coarse
+   *   neighbour of its refined face; for a DoF of a ghost cell that
+   *   neighbour need not touch an owned cell, and p4est's ghost layer does
+   *   not hold it. With the whole mesh everywhere every master is here,
+   *   and so are the cells that the capped meshes of the multilevel
+   *   solver (LevelMeshes) are built from. Every DoF is then a ghost of
+   *   every process: the work is divided, the vectors are not. deal.II
+   *   9.4 does not renumber the levels of such a mesh, so they keep its
+   *   numbering (LevelDoFNumbering is skipped), which changes with the
+   *   partition after every refinement.
+   * With one process both hold the whole mesh; their level numberings
+   * differ, and with them the round-off.
    */
   template <int dim>
   class Discretization
   {
   public:
-    Discretization(const Scene<dim> &scene,
-                   const unsigned int n_levels,
-                   const MPI_Comm     comm);
-
-    const parallel::distributed::Triangulation<dim> &get_triangulation() const
+    /** How the processes hold the mesh (see the class documentation). */
+    enum class MeshDistribution
     {
-      return triangulation;
-    }
-    MPI_Comm get_communicator() const { return triangulation.get_communicator(); }
+      partitioned,
+      replicated
+    };
+
+    Discretization(const Scene<dim> &     scene,
+                   const unsigned int     n_levels,
+                   const MPI_Comm         comm,
+                   const MeshDistribution distribution = MeshDistribution::partitioned);
+
+    const parallel::TriangulationBase<dim> &get_triangulation() const { return *triangulation; }
+    MPI_Comm get_communicator() const { return triangulation->get_communicator(); }
+    MeshDistribution get_mesh_distribution() const { return distribution; }
     /** Whether @p cell (of any level) has DoFs here: owned or ghost. */
     template <typename Iterator>
     static bool is_present(const Iterator &cell)
@@ -101,7 +120,8 @@ namespace FoslsContact
      * vertices and faces the marked cells add). Each of @p carried is a
      * function on the active mesh (Cartesian, in the active numbering,
      * with its ghost values) and is replaced by its interpolant on the
-     * refined mesh (nested spaces: the same function). Collective.
+     * refined mesh (nested spaces: the same function). Needs a replicated
+     * mesh (MeshDistribution). Collective.
      */
     bool refine(const Vector<float> &              criteria,
                 const Parameters::Adaptivity &     adaptivity,
@@ -114,8 +134,9 @@ namespace FoslsContact
      * multilevel solver on an adaptively refined mesh (LevelMeshes): they
      * are nested, and each is balanced as @p fine is (capping the levels
      * never increases the level difference of two cells at a vertex), so
-     * p4est adds no cells. The cells are found by their CellId, refined
-     * one mesh level at a time. One process. Collective.
+     * the mesh's smoothing adds no cells. The cells are found by their
+     * CellId, refined one mesh level at a time. Both meshes replicated
+     * (MeshDistribution). Collective.
      */
     void refine_as(const Triangulation<dim> &fine, const unsigned int mesh_level);
 
@@ -145,7 +166,7 @@ namespace FoslsContact
      */
     std::vector<types::global_dof_index> sweep_order(const unsigned int l) const;
 
-    /** The bytes of the mesh (with p4est's forest) and the DoF handler. */
+    /** The bytes of the mesh (with p4est's forest, where it has one) and the DoF handler. */
     std::size_t mesh_memory_consumption() const;
     /**
      * The bytes of the level data by level: the coupling patterns, the
@@ -193,8 +214,9 @@ namespace FoslsContact
                          LevelVector &      x,
                          const bool         inverse) const;
 
-    const Scene<dim> &      scene;
-    parallel::distributed::Triangulation<dim> triangulation;
+    const Scene<dim> &                                scene;
+    const MeshDistribution                            distribution;
+    std::unique_ptr<parallel::TriangulationBase<dim>> triangulation;
     std::shared_ptr<const Utilities::MPI::Partitioner> active_partitioner;
     FESystem<dim>           fe;
     MappingQ<dim>           mapping;

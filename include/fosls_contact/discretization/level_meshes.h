@@ -35,7 +35,10 @@ namespace FoslsContact
    * level l refines, applied to the coarse function with its hanging DoFs
    * restored from their masters; the rows of the fine hanging DoFs are
    * empty (they are eliminated). Below the adaptive part the prolongations
-   * are LevelTransfer's. One MPI process, as adaptive runs are.
+   * are LevelTransfer's. The capped meshes are held as the adaptive mesh
+   * is (Discretization::MeshDistribution::replicated: whole on every
+   * process, each partitioned on its own), so the coarse cell of every
+   * fine cell, and every coarse DoF, is on every process.
    */
   template <int dim>
   class LevelMeshes

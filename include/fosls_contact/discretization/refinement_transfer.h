@@ -27,7 +27,7 @@ namespace FoslsContact
    * the Hertz scene's fourth mesh). Here the prolongation applies the
    * parent's and the child's signs (rt_signs()), as LevelTransfer does
    * between the uniform levels.
-   * On one process (as adaptive refinement).
+   * On a replicated mesh (as adaptive refinement): every cell is here.
    */
   template <int dim>
   class RefinementTransfer

@@ -19,8 +19,9 @@ namespace FoslsContact
    * the total) or a fixed fraction (the ceil(Fraction N) cells of the
    * largest eta_T), at least one cell, and with them every cell whose
    * eta_T^2 is within 0.1% of the smallest one taken if that is positive
-   * (see the source for why); then the marks that the mesh's smoothing (at most one level of
-   * difference at a vertex) adds. Nothing is coarsened.
+   * (see the source for why); then the marks that the mesh's smoothing
+   * (at most one level of difference at a vertex) adds. Nothing is
+   * coarsened.
    * Returns false, with no cell marked, if the refined mesh could have more
    * than Adaptivity/Max DoFs DoFs, from @p n_dofs now: a bound, not an
    * estimate (refining a cell adds at most 3^d - 2^d vertices and

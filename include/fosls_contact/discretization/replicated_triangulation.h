@@ -17,7 +17,7 @@ namespace FoslsContact
    * constructor refuses construct_multigrid_hierarchy without them): cells
    * away from a process's own are marked artificial on it and get no DoFs
    * there. The adaptive hierarchy needs them all (Discretization), so after
-   * every partition (creation, refinement) this class gives each cell its
+   * every partition (creation, copy, refinement) this class gives each cell its
    * true owner back, on the active mesh and on every level: the DoF
    * handler then distributes the DoFs of every cell on every process, and
    * the relevant DoFs are all DoFs.
@@ -43,7 +43,8 @@ namespace FoslsContact
   public:
     using Base = parallel::shared::Triangulation<dim>;
 
-    ReplicatedTriangulation(const MPI_Comm comm, const typename Triangulation<dim>::MeshSmoothing smoothing);
+    ReplicatedTriangulation(const MPI_Comm                                   comm,
+                            const typename Triangulation<dim>::MeshSmoothing smoothing);
 
     // (the other overloads as the base class has them)
     using Base::create_triangulation;

@@ -130,9 +130,16 @@ namespace FoslsContact
     if (!mark_for_refinement(dynamic_cast<ReplicatedTriangulation<dim> &>(*triangulation),
                              criteria, adaptivity, dof_handler.n_dofs()))
       return false;
+    // (every cell's values are read, the ghost cells' too, through
+    // deal.II's accessors, so in deal.II's ghost state; a copy of a vector,
+    // as the steps' solutions kept for the reference are, has no ghost
+    // values, so they are brought up to date here)
     std::vector<RefinementTransfer<dim>> carry(carried.size());
     for (unsigned int i = 0; i < carried.size(); ++i)
-      carry[i].prepare(dof_handler, *carried[i]);
+      {
+        carried[i]->update_ghost_values();
+        carry[i].prepare(dof_handler, *carried[i]);
+      }
     triangulation->execute_coarsening_and_refinement();
     setup_dofs_and_levels();
     for (unsigned int i = 0; i < carried.size(); ++i)

@@ -118,8 +118,8 @@ namespace FoslsContact
      * mesh as the finest. Returns false, refining nothing, if the refined
      * mesh could have more than Adaptivity/Max DoFs DoFs (bounded by the
      * vertices and faces the marked cells add). Each of @p carried is a
-     * function on the active mesh (Cartesian, in the active numbering,
-     * with its ghost values) and is replaced by its interpolant on the
+     * function on the active mesh (Cartesian, in the active numbering;
+     * its ghost values are updated here) and is replaced by its interpolant on the
      * refined mesh (nested spaces: the same function). Needs a replicated
      * mesh (MeshDistribution). Collective.
      */

@@ -22,7 +22,7 @@ import time
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from parallel import run  # noqa: E402
+from parallel import label, relative, run  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RES = os.path.join(ROOT, "bench", "results", "adaptive_processes")
@@ -32,10 +32,6 @@ CONFIGURATIONS = [(1, 1), (1, 2), (2, 1)]
 PHASES = [("Assembly", "assembly"), ("Definiteness check", "definiteness check"),
           ("Setup: solver", "solver set-up"), ("Solve", "solve"),
           ("Refinement", "refinement")]
-
-
-def label(processes, threads):
-    return f"{processes} x {threads}"
 
 
 def fastest(scene, runs):
@@ -60,12 +56,6 @@ def same_meshes(a, b):
     def meshes(s):
         return [(x["cells"], x["dofs"]) for x in s["adaptive_steps"]]
     return meshes(a) == meshes(b)
-
-
-def force_difference(a, b):
-    fa, fb = a["contact_force"], b["contact_force"]
-    norm = sum(x * x for x in fa) ** 0.5
-    return sum((x - y) ** 2 for x, y in zip(fa, fb)) ** 0.5 / norm
 
 
 def main():
@@ -99,7 +89,7 @@ def main():
             sections = s.get("time_sections_s", {})
             lines.append(
                 f"| {label(*key)} | {'yes' if same_meshes(s, one) else 'no'} | "
-                f"{force_difference(s, one):.1e} | {s['wall_s']:.2f} | "
+                f"{relative(s, one):.1e} | {s['wall_s']:.2f} | "
                 + " | ".join(f"{sections.get(section, 0.0):.2f}" for section, _ in PHASES)
                 + f" | {s['wall_s'] / one['wall_s']:.2f} | {s['peak_rss_mb']:.0f} | "
                 f"{s['peak_rss_mb'] / one['peak_rss_mb']:.2f} |")

@@ -26,6 +26,7 @@
 #include <fosls_contact/input/parameter_reader.h>
 #include <fosls_contact/output/collective_error.h>
 #include <fosls_contact/output/error_line.h>
+#include <fosls_contact/output/interruption.h>
 #include <fosls_contact/parameters.h>
 
 #include <muParser.h>
@@ -84,6 +85,9 @@ main(int argc, char *argv[])
   // run before its files are written: writes to it then fail quietly (after
   // MPI_Init, which may install its own handler)
   std::signal(SIGPIPE, SIG_IGN);
+  // a time limit's SIGTERM or a Ctrl-C: the run stops with what it
+  // finished (exit code 4)
+  Interruption::install();
   dealii::deal_II_exceptions::disable_abort_on_exception();
   dealii::deal_II_exceptions::suppress_stacktrace_in_exceptions();
 
@@ -150,6 +154,15 @@ main(int argc, char *argv[])
                 }
             }
         }
+    }
+  catch (const InterruptedRun &exc)
+    {
+      // (every process throws it at once: Interruption::requested() is
+      // collective)
+      if (first_rank)
+        ErrorLine::print("fosls-contact: " + ErrorLine::one_line(exc.what()));
+      MPI_Comm_free(&error_comm);
+      return CommandLine::interrupted;
     }
   catch (const InputError &exc)
     {

@@ -3,18 +3,25 @@
 positive definite, level by level: how far the limit moves between the level
 the definiteness check is run on and finer levels.
 
-For each scene and value of Geometry/Levels it bisects C_compl between a
-weight the program accepts and one it refuses, with the definiteness check
+For each scene and value of Geometry/Levels it runs the definiteness check
 on the finest level (Solver/Definiteness check max dofs raised above its
-DoFs), and prints the bracket [accepted, refused] and its move from the
-previous level. The check's smallest relative eigenvalue of the contact
-Schur complement decides (doc/method.md section 6); the solve itself is cut
-to one projected Gauss-Seidel sweep (a step of the active set method would
-factorize the whole matrix: a minute on the cube's level 5).
+DoFs) with C_compl = auto and prints the limit the program computes there
+(DefinitenessCheck::limit_factor, a generalized eigenproblem on the contact
+Schur complement; doc/method.md section 6), its move from the previous
+level, and the ratio of the limit on the level that the default check
+(at most 20,000 DoFs) runs on to the finest level's: the margin auto's
+fraction 1/2 must cover. The solve itself is cut to one projected
+Gauss-Seidel sweep (a step of the active set method would factorize the
+whole matrix: a minute on the cube's level 5).
+
+With --bisect, it also bisects C_compl between a weight the program accepts
+and one it refuses (the check's smallest relative eigenvalue of the contact
+Schur complement decides), as an independent check of the computed limit:
+the bracket [accepted, refused] must hold it.
 
     bench/definiteness_limit.py [--exe build/fosls-contact]
         [--scene square.prm:3-9] [--scene hertz.prm:2-6] [--scene cube3d.prm:2-5]
-        [--tolerance 2e-3]
+        [--scene punch.prm:1-4] [--bisect] [--tolerance 2e-3]
 
 After the first level of a scene, the bisection starts from the last
 level's bracket: its refused weight is refused on the finer level too (the
@@ -28,6 +35,8 @@ import tempfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+LIMIT = re.compile(r"C_compl = auto: [0-9.eE+-]+ \([^)]*largest definite value "
+                   r"([0-9.eE+-]+) on level (\d+)\)")
 PATTERN = re.compile(r"Definiteness check on level (\d+)[^:]*: smallest relative eigenvalue of the "
                      r"contact Schur complement = (-?[0-9.eE+-]+)")
 
@@ -37,7 +46,9 @@ def arguments():
     p.add_argument("--exe", default=str(ROOT / "build" / "fosls-contact"))
     p.add_argument("--scene", action="append", metavar="FILE:FIRST-LAST",
                    help="a file of prm/ and its Geometry/Levels range "
-                   "(default square.prm:3-9, hertz.prm:2-6 and cube3d.prm:2-5)")
+                   "(default square.prm:3-9, hertz.prm:2-6, cube3d.prm:2-5, punch.prm:1-4)")
+    p.add_argument("--bisect", action="store_true",
+                   help="also bisect the limit between accepted and refused weights")
     p.add_argument("--low", type=float, default=0.2,
                    help="a weight accepted on the first level (default 0.2)")
     p.add_argument("--high", type=float, default=1.0,
@@ -45,7 +56,8 @@ def arguments():
     p.add_argument("--tolerance", type=float, default=2e-3,
                    help="width of the bracket (absolute)")
     a = p.parse_args()
-    a.scene = a.scene or ["square.prm:3-9", "hertz.prm:2-6", "cube3d.prm:2-5"]
+    a.scene = a.scene or ["square.prm:3-9", "hertz.prm:2-6", "cube3d.prm:2-5",
+                          "punch.prm:1-4"]
     return a
 
 
@@ -99,28 +111,61 @@ def limit(exe, scene, levels, low, high, tolerance):
     return level, low, high
 
 
+def computed_limit(exe, scene, levels, settings=()):
+    """The limit that C_compl = auto computes on the finest level, and that level."""
+    with tempfile.TemporaryDirectory() as out:
+        run = subprocess.run(
+            finest_level_check(exe, scene, levels, f"{out}/o",
+                               ["Functional weights/C_compl=auto"] + list(settings)),
+            capture_output=True, text=True)
+    m = LIMIT.search(run.stdout)
+    if not m:
+        raise SystemExit(f"no computed limit in the output of {scene} at {levels} levels:\n"
+                         f"{run.stdout[-2000:]}{run.stderr[-2000:]}")
+    return float(m.group(1)), int(m.group(2))
+
+
+def default_check_level(exe, scene, levels):
+    """The level the default definiteness check (at most 20,000 DoFs) runs on."""
+    with tempfile.TemporaryDirectory() as out:
+        command = finest_level_check(exe, scene, levels, f"{out}/o",
+                                     ["Solver/Definiteness check max dofs=20000",
+                                      "Functional weights/C_compl=auto"])
+        run = subprocess.run(command, capture_output=True, text=True)
+    m = LIMIT.search(run.stdout)
+    return int(m.group(2)) if m else None
+
+
 def main():
     a = arguments()
-    print("| scene | Geometry/Levels | finest level | C_compl accepted | refused | "
-          "move of the limit from the level before |")
-    print("|---|---|---|---|---|---|")
+    bracket = " C_compl accepted | refused |" if a.bisect else ""
+    print("| scene | Geometry/Levels | computed limit |" + bracket +
+          " move from the level before | default check's level | its limit / this limit |")
+    print("|---|---|---|" + ("---|---|" if a.bisect else "") + "---|---|---|")
     for spec in a.scene:
         scene, _, span = spec.partition(":")
         first, _, last = span.partition("-")
         previous = None
+        limits = {}
         low, high = a.low, a.high
         for levels in range(int(first), int(last) + 1):
-            # the limit only goes down under refinement (nested spaces): the
-            # last level's refused weight is refused here too, and the
-            # bracket starts below its accepted one
-            level, low, high = limit(a.exe, scene, levels,
+            value, level = computed_limit(a.exe, scene, levels)
+            limits[level] = value
+            row = f"| {scene} | {levels} | {value:.4f} |"
+            if a.bisect:
+                # the limit only goes down under refinement (nested spaces):
+                # the last level's refused weight is refused here too, and
+                # the bracket starts below its accepted one
+                _, low, high = limit(a.exe, scene, levels,
                                      a.low if previous is None else 0.8 * low,
                                      high, a.tolerance)
-            middle = 0.5 * (low + high)
-            move = "" if previous is None else f"{(middle - previous) / previous:+.1%}"
-            print(f"| {scene} | {levels} | {level} | {low:.4f} | {high:.4f} | {move} |",
-                  flush=True)
-            previous = middle
+                row += f" {low:.4f} | {high:.4f} |"
+            move = "" if previous is None else f"{(value - previous) / previous:+.1%}"
+            checked = default_check_level(a.exe, scene, levels)
+            ratio = (f"{limits[checked] / value:.3f}" if checked in limits else "")
+            row += f" {move} | {checked} | {ratio} |"
+            print(row, flush=True)
+            previous = value
 
 
 if __name__ == "__main__":

@@ -5,6 +5,7 @@
 #include <fosls_contact/assembly/error_indicators.h>
 #include <fosls_contact/assembly/fosls_assembler.h>
 #include <fosls_contact/fosls_problem.h>
+#include <fosls_contact/output/interruption.h>
 #include <fosls_contact/output/json.h>
 #include <fosls_contact/output/postprocessor.h>
 #include <fosls_contact/problem/initial_guess.h>
@@ -12,6 +13,7 @@
 #include <fosls_contact/problem/solver_choice.h>
 #include <fosls_contact/solvers/active_set_direct.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
@@ -97,6 +99,40 @@ namespace FoslsContact
       release = [this, L]() { discretization->release_coupling_pattern(L); };
     FoslsAssembler<dim>(*discretization, parameters.weights).assemble(L, qp, release);
     time_setup += wall.wall_time();
+  }
+
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::choose_weights()
+  {
+    auto &w = parameters.weights;
+    if (w.c_compl_auto)
+      {
+        const ProblemChecks<dim> checks(parameters, scene, *discretization, qp, pcout);
+        const auto chosen = checks.choose_compl_weight(timer, definite_levels);
+        w.c_compl         = chosen.value;
+        // used_parameters.prm runs the same functional again
+        std::ostringstream value;
+        value << std::setprecision(17) << w.c_compl << "  # auto";
+        if (std::isfinite(chosen.limit))
+          value << ": the largest definite value " << std::setprecision(4) << chosen.limit
+                << " on level " << chosen.level + 1;
+        // (the one line 'set C_compl = auto' of ParameterHandler's output)
+        std::istringstream lines(used_parameters);
+        std::string        replaced;
+        for (std::string line; std::getline(lines, line);)
+          {
+            const auto set = line.find("set C_compl");
+            const auto eq  = line.find('=', set);
+            if (set != std::string::npos && eq != std::string::npos &&
+                Utilities::trim(line.substr(eq + 1)) == "auto")
+              line = line.substr(0, eq + 1) + " " + value.str();
+            replaced += line + "\n";
+          }
+        used_parameters = replaced;
+        compl_limit = chosen.limit;
+      }
   }
 
 
@@ -242,6 +278,12 @@ namespace FoslsContact
     const RunSummary<dim> run_summary(
       parameters, scene, *discretization, qp, solution, *solver, *monitor, pcout);
     summary = run_summary.cost(timer, time_setup, time_solve, phase_memory, solve_communication);
+    const auto &w = parameters.weights;
+    summary["functional_weights"] =
+      "{\"C_eq\": " + json_number(w.c_eq) + ", \"C_const\": " + json_number(w.c_const) +
+      ", \"C_compl\": " + json_number(w.c_compl) +
+      ", \"C_compl_auto\": " + (w.c_compl_auto ? "true" : "false") +
+      ", \"C_compl_limit\": " + json_number(compl_limit) + "}";
     Postprocessor<dim>   post(*discretization, parameters);
     const LevelVector    cartesian = post.solution_in_scene_units(solution);
     const Tensor<1, dim> force     = post.contact_force(cartesian);
@@ -313,8 +355,10 @@ namespace FoslsContact
             step_solutions.clear();
           }
       }
-    post.write_step(solution, *indicators, step, output);
+    const std::string table = post.write_step(solution, *indicators, step, output);
     steps.add(row);
+    if (parameters.adaptivity.enabled())
+      finished = FinishedStep{table, monitor->csv(), summary};
   }
 
 
@@ -439,6 +483,36 @@ namespace FoslsContact
 
   template <int dim>
   void
+  FoslsProblem<dim>::stop_interrupted(OutputDirectory &output)
+  {
+    const std::string signal =
+      Interruption::signal_name().empty() ? "a signal" : Interruption::signal_name();
+    if (!finished)
+      throw InterruptedRun("interrupted by " + signal +
+                           " before the first solve finished: no output written");
+    pcout << "Interrupted by " << signal << ": publishing the " << steps.size()
+          << " finished adaptive step(s)" << std::endl;
+    summary                   = finished->summary;
+    adaptive_stop             = "interrupted by " + signal;
+    summary["interrupted"]    = "\"" + signal + "\"";
+    summary["adaptive_steps"] = steps.json();
+    summary["adaptive_stop"]  = "\"" + adaptive_stop + "\"";
+    Postprocessor<dim>(*discretization, parameters)
+      .write(finished->contact_table,
+             finished->convergence,
+             summary,
+             used_parameters,
+             {{"adaptive_steps.csv", steps.csv()}},
+             output);
+    throw InterruptedRun("interrupted by " + signal + " in adaptive step " +
+                         std::to_string(steps.size()) + ": the " +
+                         std::to_string(steps.size()) + " finished step(s) are written to " +
+                         parameters.output.directory + "/, summary.json has \"interrupted\"");
+  }
+
+
+  template <int dim>
+  void
   FoslsProblem<dim>::record_memory(const std::string &phase)
   {
     Utilities::System::MemoryStats memory;
@@ -467,15 +541,22 @@ namespace FoslsContact
   {
     // an unusable output directory is found before the work, not after it
     OutputDirectory output(parameters.output.directory, MPI_COMM_WORLD);
+    // (once the output is published, a signal no longer changes the run)
+    bool published = false;
     // one line as each phase ends, so that a long run shows where it is
+    // (a SIGTERM or SIGINT is heeded as a phase ends: the solvers stop
+    // their iteration for it, the other phases are short)
     const auto phase = [&](const char *name, const auto &work) {
       Timer wall;
       work();
       pcout << name << " ... " << std::fixed << std::setprecision(2) << wall.wall_time()
             << " s" << std::defaultfloat << std::endl;
       record_memory(name);
+      if (!published && Interruption::requested(MPI_COMM_WORLD))
+        stop_interrupted(output);
     };
     phase("Setup: mesh, DoFs, levels", [&] { setup(); });
+    phase("Functional weights", [&] { choose_weights(); });
     for (step = 0;; ++step)
       {
         Timer step_wall;
@@ -491,7 +572,10 @@ namespace FoslsContact
           steps.set_step_time(step_wall.wall_time());
           further = !reference_solved && steps.go_on(parameters.adaptivity, adaptive_stop);
           if (!further && !reference_pending())
-            finish(output);
+            {
+              finish(output);
+              published = true;
+            }
         });
         if (!further && !reference_pending())
           break;
@@ -503,7 +587,10 @@ namespace FoslsContact
               adaptive_stop = "the next mesh could have more than Adaptivity/Max DoFs DoFs";
             if (!refined && !reference_pending())
               {
-                phase("Output", [&] { finish(output); });
+                phase("Output", [&] {
+                  finish(output);
+                  published = true;
+                });
                 break;
               }
           }

@@ -20,6 +20,7 @@
 #include <map>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -63,6 +64,14 @@ namespace FoslsContact
      * frees it, or (active set solvers, cross check) the run keeps it.
      */
     void assemble();
+    /**
+     * Functional weights/C_compl = auto: take the weight
+     * ProblemChecks::choose_compl_weight() chooses on the scene's mesh,
+     * before the finest level is assembled (once: an adaptive run keeps
+     * it, so that its steps minimize the same functional), and write it
+     * into used_parameters.prm and summary.json.
+     */
+    void choose_weights();
     /**
      * Whether the run needs the finest level's coupling pattern after the
      * assembly (after the checks and the solver's set-up if @p after_setup):
@@ -117,11 +126,22 @@ namespace FoslsContact
     void start_from_carried();
     /** The files of the whole run, published with the steps' VTU files. */
     void finish(OutputDirectory &output);
+    /**
+     * After a SIGTERM or SIGINT (Interruption): publish the adaptive steps
+     * finished so far, with the files of the last of them, and throw
+     * InterruptedRun; without a finished step only throw.
+     */
+    [[noreturn]] void stop_interrupted(OutputDirectory &output);
     /** Append the resident memory after @p phase. Collective. */
     void record_memory(const std::string &phase);
 
-    const Parameters::AllParameters parameters;
-    const std::string               used_parameters;
+    /**
+     * The scene's parameters; with Functional weights/C_compl = auto, its
+     * weight is the one choose_weights() takes.
+     */
+    Parameters::AllParameters parameters;
+    /** used_parameters.prm (with the C_compl taken where it was auto). */
+    std::string               used_parameters;
     ConditionalOStream              pcout;
     mutable TimerOutput             timer;
 
@@ -149,6 +169,23 @@ namespace FoslsContact
     bool                                 reference_solved = false;
     /** Why the adaptive loop stopped. */
     std::string                          adaptive_stop;
+    /**
+     * An adaptive run's last finished step (output_step()): its files
+     * that finish() writes from the current solution, kept for
+     * stop_interrupted(), which publishes them when a signal arrives while
+     * the next step is under way.
+     */
+    struct FinishedStep
+    {
+      std::string                        contact_table, convergence;
+      std::map<std::string, std::string> summary;
+    };
+    std::optional<FinishedStep>          finished;
+    /**
+     * C_compl = auto: the largest definite C_compl on the level of the
+     * definiteness check (NaN: not computed, or C_compl given).
+     */
+    double compl_limit = std::numeric_limits<double>::quiet_NaN();
     /** The uniform levels the definiteness check passed (ProblemChecks). */
     std::set<unsigned int>               definite_levels;
     double                               time_setup = 0, time_solve = 0;

@@ -88,7 +88,10 @@ namespace FoslsContact
            "     on stderr says so\n"
            "  3  an error that only some MPI processes met, the others stopped by\n"
            "     MPI_Abort: memory that ran out on one process, or a defect of the\n"
-           "     program (worth a report)\n";
+           "     program (worth a report)\n"
+           "  4  stopped by SIGTERM or SIGINT: an adaptive run publishes the steps it\n"
+           "     finished (summary.json has \"interrupted\"), a run without a finished\n"
+           "     step writes nothing; one line on stderr says which\n";
   }
 
 

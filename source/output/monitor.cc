@@ -1,3 +1,4 @@
+#include <fosls_contact/output/interruption.h>
 #include <fosls_contact/output/monitor.h>
 
 #include <algorithm>
@@ -98,6 +99,13 @@ namespace FoslsContact
       std::make_tuple(stop, has_converged, at_floor, reason),
       0);
     std::tie(stop, has_converged, at_floor, reason) = decision;
+    // a SIGTERM or SIGINT: the run stops with what it finished
+    if (Interruption::requested(qp.get_communicator()))
+      {
+        stop          = true;
+        has_converged = false;
+        reason        = "interrupted";
+      }
 
     pcout << "  " << solver_name << ": it " << std::setw(3) << r.iteration
           << "  J = " << std::scientific << std::setprecision(6)

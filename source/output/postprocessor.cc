@@ -323,7 +323,7 @@ namespace FoslsContact
 
 
   template <int dim>
-  void
+  std::string
   Postprocessor<dim>::write_step(const LevelVector &         x,
                                  const ErrorIndicators<dim> &indicators,
                                  const unsigned int          step,
@@ -331,10 +331,13 @@ namespace FoslsContact
   {
     // an adaptive run keeps every step's contact table too (contact.csv is
     // the last one's): the pressure on each mesh, for comparisons
-    const bool table = parameters.adaptivity.enabled() && discretization.get_scene().has_contact();
-    if (!parameters.output.write_vtu && !table)
-      return;
-    const std::string csv = table ? ContactTable<dim>(discretization).csv(x) : ""; // (collective)
+    // (and returns every step's table, which an interrupted run publishes
+    // as contact.csv of its last finished step, FoslsProblem::run())
+    const bool adaptive = parameters.adaptivity.enabled();
+    const bool table    = adaptive && discretization.get_scene().has_contact();
+    if (!parameters.output.write_vtu && !adaptive)
+      return "";
+    const std::string csv = adaptive ? ContactTable<dim>(discretization).csv(x) : ""; // (collective)
     std::string       error;
     try
       {
@@ -352,6 +355,7 @@ namespace FoslsContact
     // (every process learns of a failure anywhere, and publishes nothing)
     if (Utilities::MPI::logical_or(!error.empty(), discretization.get_communicator()))
       output.publish(error);
+    return csv;
   }
 
 
@@ -364,9 +368,22 @@ namespace FoslsContact
                             const std::map<std::string, std::string> &extra_files,
                             OutputDirectory &                          output) const
   {
-    const MPI_Comm     comm  = discretization.get_communicator();
-    const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
-    const std::string  table = ContactTable<dim>(discretization).csv(x); // (collective)
+    const std::string table = ContactTable<dim>(discretization).csv(x); // (collective)
+    write(table, monitor.csv(), summary, used_parameters, extra_files, output);
+  }
+
+
+  template <int dim>
+  void
+  Postprocessor<dim>::write(const std::string &                        table,
+                            const std::string &                        convergence,
+                            const std::map<std::string, std::string> &summary,
+                            const std::string &                        used_parameters,
+                            const std::map<std::string, std::string> &extra_files,
+                            OutputDirectory &                          output) const
+  {
+    const MPI_Comm     comm = discretization.get_communicator();
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
     // every process writes its files into the staging directory; a
     // failure (a full disk) is collected, so that every process reaches
     // publish(), which then publishes nothing and stops all of them
@@ -378,7 +395,7 @@ namespace FoslsContact
             for (const auto &[name, contents] : extra_files)
               output.write(name, [&](std::ostream &out) { out << contents; });
             output.write("contact.csv", [&](std::ostream &out) { out << table; });
-            output.write("convergence.csv", [&](std::ostream &out) { out << monitor.csv(); });
+            output.write("convergence.csv", [&](std::ostream &out) { out << convergence; });
             output.write("used_parameters.prm",
                          [&](std::ostream &out) { out << used_parameters; });
             output.write("summary.json", [&](std::ostream &out) {

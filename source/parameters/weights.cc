@@ -3,6 +3,9 @@
 #include <fosls_contact/parameters/weights.h>
 #include <fosls_contact/parameters/value_parsing.h>
 
+#include <cmath>
+#include <limits>
+
 namespace FoslsContact
 {
   namespace Parameters
@@ -21,15 +24,20 @@ namespace FoslsContact
                         "Weight of ||A sigma - eps(u)||^2 (paper eq. 1). C_eq and "
                         "C_const may be at most 1e12 apart.");
       prm.declare_entry("C_compl",
-                        "0.1",
-                        Patterns::Double(0),
+                        "auto",
+                        Patterns::Anything(),
                         "Weight of the complementarity term <u.n - g, (sigma n).n> "
-                        "(paper eq. 2). Too large a value makes the problem "
-                        "indefinite; the program checks and refuses. The "
-                        "paper's 1e1 is indefinite with C_const = 1 (see "
-                        "doc/method.md, section 5), hence the default 0.1. The "
-                        "three weights apply to the dimensionless terms "
-                        "(Scaling), so they mean the same in every unit system.");
+                        "(paper eq. 2): a number >= 0, or auto. Too large a value "
+                        "makes the problem indefinite, and where that limit lies "
+                        "depends on the mesh; the program computes it on the "
+                        "level of its definiteness check and refuses a number "
+                        "beyond it, naming the largest accepted value. auto takes "
+                        "0.1, or half the limit where that is less (doc/method.md, "
+                        "section 6); the screen, summary.json and "
+                        "used_parameters.prm give the value taken. The paper's "
+                        "1e1 is indefinite with C_const = 1. The three weights "
+                        "apply to the dimensionless terms (Scaling), so they mean "
+                        "the same in every unit system.");
       prm.leave_subsection();
     }
 
@@ -39,9 +47,27 @@ namespace FoslsContact
       prm.enter_subsection("Functional weights");
       c_eq    = prm.get_double("C_eq");
       c_const = prm.get_double("C_const");
-      c_compl = prm.get_double("C_compl");
+      const std::string compl_text = Utilities::trim(prm.get("C_compl"));
       const std::string eq_text = prm.get("C_eq"), const_text = prm.get("C_const");
       prm.leave_subsection();
+      c_compl_auto = compl_text == "auto";
+      c_compl      = auto_compl_cap;
+      if (!c_compl_auto)
+        {
+          c_compl = std::numeric_limits<double>::quiet_NaN();
+          try
+            {
+              std::size_t end = 0;
+              const double value = std::stod(compl_text, &end);
+              if (end == compl_text.size())
+                c_compl = value;
+            }
+          catch (...)
+            {}
+          AssertThrow(std::isfinite(c_compl) && c_compl >= 0,
+                      ExcMessage("parameter 'Functional weights/C_compl' = " + compl_text +
+                                 " must be 'auto' or a number >= 0"));
+        }
       AssertThrow(c_eq > 0 && c_const > 0,
                   ExcMessage("parameters 'Functional weights/C_eq' and "
                              "'C_const' must be > 0"));

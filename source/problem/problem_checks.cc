@@ -7,6 +7,7 @@
 #include <fosls_contact/qp/definiteness_check.h>
 #include <fosls_contact/qp/gathered_qp.h>
 
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -155,6 +156,112 @@ namespace FoslsContact
 
 
   template <int dim>
+  DefinitenessCheck
+  ProblemChecks<dim>::check_level(const int level, const Parameters::Weights &weights,
+                                  const bool use_assembled) const
+  {
+    DefinitenessCheck result;
+    auto              check = [&](const ConstrainedQP &level_qp) {
+      const GatheredQP gathered(level_qp);
+      // The first process alone factorizes: its refusal of A_II, or an
+      // error there (memory, CHOLMOD), stops every process with the same
+      // line (CollectiveError).
+      CollectiveError::run(discretization.get_communicator(), [&]() {
+        if (!gathered.here())
+          return;
+        result = DefinitenessCheck::run(gathered.qp());
+        AssertThrow(result.interior_definite,
+                    ExcMessage("the functional's matrix without its contact DoFs is not "
+                               "positive definite in floating point on level " +
+                               std::to_string(level + 1) +
+                               " (its Cholesky factorization failed): the functional is too "
+                               "badly conditioned for double precision; check that the "
+                               "'Functional weights' are not many orders of magnitude apart"));
+      });
+      // (every process learns the outcome, so that every process stops
+      // with the same line)
+      const MPI_Comm comm = discretization.get_communicator();
+      result.min_relative_eigenvalue =
+        Utilities::MPI::broadcast(comm, result.min_relative_eigenvalue, 0);
+      result.limit_factor = Utilities::MPI::broadcast(comm, result.limit_factor, 0);
+    };
+    if (use_assembled)
+      check(qp);
+    else
+      {
+        ConstrainedQP level_qp;
+        level_qp.reinit(discretization.level(level));
+        FoslsAssembler<dim>(discretization, weights).assemble(level, level_qp);
+        check(level_qp);
+      }
+    return result;
+  }
+
+
+  template <int dim>
+  std::string
+  ProblemChecks<dim>::limit_text(const double limit, const int level) const
+  {
+    std::ostringstream text;
+    if (std::isnan(limit))
+      text << "unknown";
+    else if (std::isinf(limit))
+      text << "none";
+    else
+      text << std::setprecision(4) << limit;
+    text << " on level " << level + 1;
+    return text.str();
+  }
+
+
+  template <int dim>
+  typename ProblemChecks<dim>::ComplWeight
+  ProblemChecks<dim>::choose_compl_weight(TimerOutput &timer, std::set<unsigned int> &passed) const
+  {
+    const auto &w   = parameters.weights;
+    const auto  cap = Parameters::Weights::auto_compl_cap;
+    if (!scene.has_contact())
+      return {cap};
+    const int level = definiteness_level(discretization, parameters.solver);
+    if (level < 0)
+      {
+        pcout << "Functional weights: C_compl = auto: " << cap
+              << " (the definiteness check is off or even level 1 is larger than its cap: "
+                 "not checked)"
+              << std::endl;
+        return {cap};
+      }
+    TimerOutput::Scope t(timer, "Definiteness check");
+    // the check as check_definiteness() makes it with the weight cap
+    const bool coarser = static_cast<unsigned int>(level) < discretization.finest_level();
+    Parameters::Weights checked = w;
+    checked.c_compl             = cap * (coarser ? 1. + coarse_level_margin : 1.);
+    DefinitenessCheck result;
+    try
+      {
+        result = check_level(level, checked, false);
+      }
+    catch (const std::exception &)
+      {
+        // A_II not definite: not a question of C_compl (a free rigid
+        // motion, a badly conditioned functional); the checks that follow
+        // name the cause
+        return {cap};
+      }
+    const double limit  = checked.c_compl * result.limit_factor;
+    const double chosen = std::min(cap, Parameters::Weights::auto_compl_fraction * limit);
+    pcout << "Functional weights: C_compl = auto: " << std::setprecision(4) << chosen << " ("
+          << (chosen < cap ? "half the largest definite value " : "the cap; the largest definite value ")
+          << limit_text(limit, level) << ")" << std::endl;
+    // (the check with the weight taken is made: it need not be made again)
+    if (chosen == cap && result.definite() && !discretization.level(level).active_mesh)
+      passed.insert(level);
+    // (NaN: S_0 itself indefinite, which the check at the cap then names)
+    return {std::isnan(chosen) ? cap : chosen, limit, level};
+  }
+
+
+  template <int dim>
   double
   ProblemChecks<dim>::check_definiteness(TimerOutput &timer, std::set<unsigned int> *passed) const
   {
@@ -183,52 +290,35 @@ namespace FoslsContact
     Parameters::Weights checked = w;
     if (coarser)
       checked.c_compl *= 1. + coarse_level_margin;
-    // on the first process, on the gathered problem of that level
-    DefinitenessCheck result;
-    auto              check = [&](const ConstrainedQP &level_qp) {
-      const GatheredQP gathered(level_qp);
-      // The first process alone factorizes: its refusal of A_II, or an
-      // error there (memory, CHOLMOD), stops every process with the same
-      // line (CollectiveError).
-      CollectiveError::run(discretization.get_communicator(), [&]() {
-        if (!gathered.here())
-          return;
-        result = DefinitenessCheck::run(gathered.qp());
-        AssertThrow(result.interior_definite,
-                    ExcMessage("the functional's matrix without its contact DoFs is not "
-                               "positive definite in floating point on level " +
-                               std::to_string(level + 1) +
-                               " (its Cholesky factorization failed): the functional is too "
-                               "badly conditioned for double precision; check that the "
-                               "'Functional weights' are not many orders of magnitude apart"));
-      });
-      // (every process learns the outcome, so that every process stops
-      // with the same line)
-      result.min_relative_eigenvalue =
-        Utilities::MPI::broadcast(discretization.get_communicator(),
-                                  result.min_relative_eigenvalue,
-                                  0);
-    };
-    if (!coarser)
-      check(qp);
-    else
-      {
-        ConstrainedQP coarse;
-        coarse.reinit(discretization.level(level));
-        FoslsAssembler<dim>(discretization, checked).assemble(level, coarse);
-        check(coarse);
-      }
-    const double       seconds = wall.wall_time();
+    const DefinitenessCheck result  = check_level(level, checked, !coarser);
+    const double            seconds = wall.wall_time();
     std::ostringstream margin;
     if (coarser)
       margin << " with C_compl = " << checked.c_compl << " (" << 100 * coarse_level_margin
              << "% margin for the finer levels)";
+    // the largest C_compl accepted: the limit, less the margin on a
+    // coarser level
+    const double accepted = checked.c_compl * result.limit_factor / (coarser ? 1. + coarse_level_margin : 1.);
     pcout << "Definiteness check on level " << level + 1 << margin.str()
           << ": smallest relative eigenvalue of the contact Schur complement = "
-          << std::setprecision(4) << result.min_relative_eigenvalue << std::endl;
+          << std::setprecision(4) << result.min_relative_eigenvalue
+          << "; largest definite C_compl " << limit_text(checked.c_compl * result.limit_factor, level)
+          << std::endl;
     std::ostringstream weights;
     weights << "C_eq = " << w.c_eq << ", C_const = " << w.c_const
             << ", C_compl = " << w.c_compl;
+    std::ostringstream advice;
+    if (std::isfinite(accepted) && accepted > 0)
+      {
+        // (4 digits, rounded down: the value named is accepted)
+        const double unit = std::pow(10., std::floor(std::log10(accepted)) - 3);
+        advice << "decrease 'Functional weights/C_compl' (the largest accepted value on this "
+                  "mesh is "
+               << std::setprecision(4) << std::floor(accepted / unit) * unit
+               << "; 'auto' chooses one) or ";
+      }
+    else
+      advice << "decrease 'Functional weights/C_compl' or ";
     AssertThrow(result.definite(),
                 ExcMessage("the functional is indefinite" +
                            std::string(coarser ? ", or within the margin of it," : "") +
@@ -237,8 +327,7 @@ namespace FoslsContact
                            "Schur complement " +
                            json_number(result.min_relative_eigenvalue) + " on level " +
                            std::to_string(level + 1) + margin.str() +
-                           "): decrease 'Functional weights/C_compl' or "
-                           "increase C_eq/C_const (paper eq. 10)"));
+                           "): " + advice.str() + "increase C_eq/C_const (paper eq. 10)"));
     if (passed && uniform)
       passed->insert(level);
     return seconds;

@@ -26,6 +26,58 @@ namespace FoslsContact
           M(r, c) = M(c, r) = 0.5 * (M(r, c) + M(c, r));
       M.compute_eigenvalues_symmetric(-1e300, 1e300, 0., values, vectors);
     }
+
+    /**
+     * DefinitenessCheck::limit_factor of the scaled Schur complement
+     * @p S on the @p contact DoFs of @p qp: M_CC, the complementarity part
+     * on them, scaled as S is (its diagonal is zero: the term couples a
+     * displacement with a stress DoF, so the scaling by diag(A_CC) does not
+     * depend on the weight).
+     */
+    double
+    complementarity_limit(const ConstrainedQP &                        qp,
+                          const std::vector<types::global_dof_index> &contact,
+                          const LAPACKFullMatrix<double> &             S)
+    {
+      const unsigned int nc = contact.size();
+      if (qp.matrix_compl.m() == 0)
+        return std::numeric_limits<double>::infinity();
+      std::vector<int> position(qp.size(), -1);
+      for (unsigned int r = 0; r < nc; ++r)
+        position[contact[r]] = r;
+      LAPACKFullMatrix<double> minus_M(nc, nc), S0(S);
+      for (unsigned int r = 0; r < nc; ++r)
+        for (auto e = qp.matrix_compl.begin(contact[r]); e != qp.matrix_compl.end(contact[r]);
+             ++e)
+          if (position[e->column()] >= 0)
+            minus_M(r, position[e->column()]) =
+              -e->value() / std::sqrt(qp.matrix.diag_element(contact[r]) *
+                                      qp.matrix.diag_element(e->column()));
+      for (unsigned int r = 0; r < nc; ++r)
+        for (unsigned int c = 0; c < nc; ++c)
+          {
+            // (symmetric to the last bit, as sygv reads one triangle)
+            minus_M(r, c) = minus_M(c, r) = 0.5 * (minus_M(r, c) + minus_M(c, r));
+            S0(r, c) += minus_M(r, c);
+          }
+      for (unsigned int r = 0; r < nc; ++r)
+        for (unsigned int c = 0; c < r; ++c)
+          S0(r, c) = S0(c, r) = 0.5 * (S0(r, c) + S0(c, r));
+      std::vector<Vector<double>> no_vectors;
+      try
+        {
+          minus_M.compute_generalized_eigenvalues_symmetric(S0, no_vectors);
+        }
+      catch (...)
+        {
+          // sygv's Cholesky factorization of S_0 failed
+          return std::numeric_limits<double>::quiet_NaN();
+        }
+      double largest = 0;
+      for (unsigned int i = 0; i < nc; ++i)
+        largest = std::max(largest, minus_M.eigenvalue(i).real());
+      return largest > 0 ? 1. / largest : std::numeric_limits<double>::infinity();
+    }
   } // namespace
 
   DefinitenessCheck
@@ -98,6 +150,7 @@ namespace FoslsContact
       for (unsigned int c = 0; c < nc; ++c)
         S(r, c) /= std::sqrt(A.diag_element(contact[r]) *
                              A.diag_element(contact[c]));
+    result.limit_factor = complementarity_limit(qp, contact, S);
     Vector<double> eigenvalues;
     FullMatrix<double> eigenvectors;
     symmetric_eigenpairs(S, eigenvalues, eigenvectors);

@@ -138,6 +138,12 @@ namespace FoslsContact
     const auto matrix_parts   = collect(owned_entries(qp.matrix.get_sparsity_pattern(), &qp.matrix, p));
     const auto coupling_parts = collect(owned_entries(
       qp.coupling_sparsity ? *qp.coupling_sparsity : qp.matrix.get_sparsity_pattern(), nullptr, p));
+    // (the complementarity part for the definiteness check's limit of its
+    // weight; none without contact)
+    const auto compl_parts =
+      collect(qp.matrix_compl.m() > 0 ?
+                owned_entries(qp.matrix_compl.get_sparsity_pattern(), &qp.matrix_compl, p) :
+                std::vector<std::array<double, 3>>());
     const auto role_parts = collect(owned_roles(qp.role, p.locally_owned_size()));
     const LevelVector b = gather(qp.rhs), fixed = gather(qp.fixed_values),
                       ub = gather(qp.upper_bounds);
@@ -148,6 +154,7 @@ namespace FoslsContact
       const auto n = p.size();
       assemble_gathered_entries(matrix_parts, n, serial.sparsity, &serial.matrix);
       assemble_gathered_entries(coupling_parts, n, coupling, nullptr);
+      assemble_gathered_entries(compl_parts, n, serial.sparsity_compl, &serial.matrix_compl);
       serial.coupling_sparsity = &coupling;
       serial.rhs               = b;
       serial.fixed_values      = fixed;

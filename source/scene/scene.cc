@@ -121,13 +121,28 @@ namespace FoslsContact
           }
       }
 
+    // A data expression is parsed, and its components counted, only where
+    // the scene uses it: a scene copied from a 2D one keeps its 2D
+    // traction where it has no Neumann boundary. The values and tractions
+    // the scene does not use are zero.
     const auto &data = prm.data;
     if (!Utilities::trim(data.body_force).empty() &&
         !is_literal_zero(data.body_force))
       body_force_function = make_function(data.body_force, dim, "Data/Body force");
-    dirichlet_function =
-      make_function(data.dirichlet_values, dim, "Data/Dirichlet values");
-    traction_function = make_function(data.traction, dim, "Data/Traction");
+    std::string zero = "0";
+    for (unsigned int d = 1; d < dim; ++d)
+      zero += "; 0";
+    // (tractions act on the Neumann boundary and on the components a
+    // Dirichlet boundary leaves free)
+    bool uses_traction = !neumann_ids.empty();
+    for (const auto id : dirichlet_ids)
+      for (const bool prescribed : dirichlet_masks.at(id))
+        uses_traction = uses_traction || !prescribed;
+    dirichlet_function = dirichlet_ids.empty() ?
+                           make_function(zero, dim, "Data/Dirichlet values") :
+                           make_function(data.dirichlet_values, dim, "Data/Dirichlet values");
+    traction_function = uses_traction ? make_function(data.traction, dim, "Data/Traction") :
+                                        make_function(zero, dim, "Data/Traction");
     if (has_contact())
       {
         gap_function    = make_function(data.gap, 1, "Data/Gap");

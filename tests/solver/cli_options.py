@@ -43,7 +43,7 @@ check(revision is not None and summary.get("git_revision") == revision.group(1)
 phases = [re.sub(r" \.\.\. \d+\.\d\d s$", "", l) for l in out.splitlines()
           if re.search(r" \.\.\. \d+\.\d\d s$", l)]
 print("phases: " + "; ".join(phases))
-check(phases == ["Setup: mesh, DoFs, levels", "Assembly",
+check(phases == ["Setup: mesh, DoFs, levels", "Functional weights", "Assembly",
                  "Checks: data, rigid motions, definiteness", "Initial guess",
                  "Setup: solver", "Solve", "Output"],
       "verbose run: one line per phase, in order")

@@ -119,7 +119,7 @@ check(relative_difference(indicators["sum"], square["functional"]) < 1e-7,
 print("SI square: %d cells, %d of them hold half of J" % (indicators["cells"],
                                                          indicators["cells_for_half_of_J"]))
 phases = square["memory_by_phase"]
-check([p["phase"] for p in phases] == ["Setup: mesh, DoFs, levels", "Assembly",
+check([p["phase"] for p in phases] == ["Setup: mesh, DoFs, levels", "Functional weights", "Assembly",
       "Checks: data, rigid motions, definiteness", "Initial guess", "Setup: solver", "Solve"]
       and all(0 < p["rss_mb"] <= p["peak_rss_mb"] <= square["peak_rss_mb"] for p in phases)
       and all(a["peak_rss_mb"] <= b["peak_rss_mb"] for a, b in zip(phases, phases[1:]))

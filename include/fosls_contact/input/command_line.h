@@ -42,6 +42,13 @@ namespace FoslsContact
        * memory that ran out on one process, or a defect of the program.
        */
       error_on_some_processes = 3,
+      /**
+       * Stopped by SIGTERM or SIGINT (Interruption): an adaptive run has
+       * published the steps it finished, summary.json says "interrupted";
+       * a run without a finished step has written nothing. One line on
+       * stderr says which.
+       */
+      interrupted = 4,
     };
 
     /** Parse @p argv; throws InputError (where: "command line"). */

@@ -94,12 +94,14 @@ namespace FoslsContact
      * series of its steps so far into @p output, unless Output/Write vtu
      * is false, and for an adaptive run with contact the step's contact
      * table, contact_<step>.csv (collective). A failure to write stops the run on every
-     * process, with nothing published.
+     * process, with nothing published. Returns the step's contact table
+     * (as contact.csv has it) in an adaptive run, on the first process
+     * ("" elsewhere and in a run without adaptivity).
      */
-    void write_step(const LevelVector &         x_rotated,
-                    const ErrorIndicators<dim> &indicators,
-                    const unsigned int          step,
-                    OutputDirectory &           output) const;
+    std::string write_step(const LevelVector &         x_rotated,
+                           const ErrorIndicators<dim> &indicators,
+                           const unsigned int          step,
+                           OutputDirectory &           output) const;
 
     /**
      * Write contact.csv, convergence.csv, summary.json,
@@ -110,6 +112,17 @@ namespace FoslsContact
      */
     void write(const LevelVector &                        x_rotated,
                const Monitor &                            monitor,
+               const std::map<std::string, std::string> &summary,
+               const std::string &                        used_parameters,
+               const std::map<std::string, std::string> &extra_files,
+               OutputDirectory &                          output) const;
+    /**
+     * The same with the texts of contact.csv and convergence.csv given:
+     * those of a step finished before (an interrupted adaptive run
+     * publishes its last finished step, FoslsProblem::run()).
+     */
+    void write(const std::string &                        contact_table,
+               const std::string &                        convergence,
                const std::map<std::string, std::string> &summary,
                const std::string &                        used_parameters,
                const std::map<std::string, std::string> &extra_files,

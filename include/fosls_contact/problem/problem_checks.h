@@ -7,9 +7,12 @@
 #include <fosls_contact/discretization/discretization.h>
 #include <fosls_contact/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
+#include <fosls_contact/qp/definiteness_check.h>
 #include <fosls_contact/scene/scene.h>
 
+#include <limits>
 #include <set>
+#include <string>
 
 namespace FoslsContact
 {
@@ -56,6 +59,25 @@ namespace FoslsContact
     double check_definiteness(TimerOutput &timer, std::set<unsigned int> *passed = nullptr) const;
 
     /**
+     * The weight C_compl = auto takes: Parameters::Weights::auto_compl_cap,
+     * or Parameters::Weights::auto_compl_fraction of the largest definite
+     * C_compl on the level check_definiteness() checks where that is less
+     * (DefinitenessCheck::limit_factor of that level, assembled here on its
+     * own, before the finest level is). The cap where the limit cannot be
+     * computed: the checks that follow then name the cause. Where the check
+     * made here is the one check_definiteness() would make, its level goes
+     * into @p passed.
+     */
+    struct ComplWeight
+    {
+      double value;
+      /** The largest definite C_compl on #level (+inf: none; NaN: not computed). */
+      double limit = std::numeric_limits<double>::quiet_NaN();
+      int    level = -1;
+    };
+    ComplWeight choose_compl_weight(TimerOutput &timer, std::set<unsigned int> &passed) const;
+
+    /**
      * The level check_definiteness() factorizes when it runs: the finest
      * with at most @p solver's Definiteness check max dofs DoFs; -1 if
      * none has so few or the check is switched off (0).
@@ -78,6 +100,18 @@ namespace FoslsContact
     static constexpr double coarse_level_margin = 0.5;
 
   private:
+    /**
+     * DefinitenessCheck::run() on @p level, on the first process, its
+     * outcome on every process: on the assembled finest level if
+     * @p use_assembled, else on @p level assembled here with @p weights.
+     * Collective.
+     */
+    DefinitenessCheck check_level(const int                  level,
+                                  const Parameters::Weights &weights,
+                                  const bool                 use_assembled) const;
+    /** "0.258 on level 6" (or "none", "unknown" for an infinite or NaN @p limit). */
+    std::string limit_text(const double limit, const int level) const;
+
     const Parameters::AllParameters &parameters;
     const Scene<dim> &               scene;
     const Discretization<dim> &      discretization;

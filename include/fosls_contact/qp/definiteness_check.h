@@ -3,6 +3,8 @@
 
 #include <fosls_contact/qp/constrained_qp.h>
 
+#include <limits>
+
 namespace FoslsContact
 {
   /**
@@ -31,6 +33,20 @@ namespace FoslsContact
      * factorization went through); if not, S is not formed.
      */
     bool interior_definite = true;
+    /**
+     * How far the complementarity weight may be scaled: the largest t with
+     * S_0 + t M_CC positive definite, where M is the problem's
+     * complementarity part (ConstrainedQP::matrix_compl, assembled with the
+     * weight C_compl) and S_0 = S - M_CC the Schur complement without it.
+     * The largest definite weight on this level is t C_compl. S depends on
+     * the weight only through M_CC, since the complementarity term couples
+     * only the contact normal DoFs, so that S(t) is affine in t and the
+     * limit is 1 / (the largest eigenvalue of -M_CC x = mu S_0 x), a dense
+     * generalized eigenproblem of the size of S. +inf where no weight
+     * makes S indefinite; NaN where S_0 itself is not positive definite
+     * (then no weight helps: the cause lies elsewhere).
+     */
+    double limit_factor = std::numeric_limits<double>::infinity();
     bool definite() const { return interior_definite && min_relative_eigenvalue > 0; }
 
     static DefinitenessCheck run(const ConstrainedQP &qp);

@@ -42,7 +42,8 @@ namespace FoslsContact
    * process, the definiteness check (a small level) and projected
    * Gauss-Seidel (the serial baseline, which sweeps the DoFs in their
    * global order). It holds A, its coupling pattern, b, the roles, the
-   * fixed values and the bounds (not the matrices of J's parts).
+   * fixed values, the bounds and the complementarity part of A (for the
+   * limit of its weight), not the equilibrium part.
    */
   class GatheredQP
   {

@@ -9,6 +9,7 @@
 #include <fosls_contact/output/json.h>
 #include <fosls_contact/output/postprocessor.h>
 #include <fosls_contact/problem/initial_guess.h>
+#include <fosls_contact/problem/memory_budget.h>
 #include <fosls_contact/problem/problem_checks.h>
 #include <fosls_contact/problem/solver_choice.h>
 #include <fosls_contact/solvers/active_set_direct.h>
@@ -41,6 +42,7 @@ namespace FoslsContact
   {
     TimerOutput::Scope t(timer, "Setup: mesh, DoFs, levels");
     Timer              wall;
+    check_memory();
     // adaptive refinement needs the whole mesh on every process
     // (Discretization explains why); a uniform mesh is partitioned
     using Distribution = typename Discretization<dim>::MeshDistribution;
@@ -83,6 +85,31 @@ namespace FoslsContact
       }
     else
       pcout << "       no contact boundary: linear FOSLS problem" << std::endl;
+  }
+
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::check_memory() const
+  {
+    // The DoFs of the finest level from the coarse mesh: every uniform
+    // refinement multiplies the cells by 2^dim, and a mesh of N cells has
+    // about N vertices and dim N faces, each with dim DoFs (Q1^dim x
+    // RT0^dim): 6 N in 2D, 12 N in 3D, the boundary's surplus aside.
+    Triangulation<dim> coarse;
+    scene.make_coarse_mesh(coarse);
+    const unsigned int levels = parameters.geometry.levels;
+    const double       dofs   = dim * (1. + dim) * coarse.n_active_cells() *
+                        std::pow(2., dim * (levels - 1.));
+    const MemoryBudget budget(dim, parameters.adaptivity.enabled(), MPI_COMM_WORLD);
+    // (the largest level count that fits, for the advice)
+    unsigned int fitting = levels;
+    while (fitting > 1 && dofs / std::pow(2., dim * (levels - fitting)) > budget.affordable_dofs())
+      --fitting;
+    budget.check(dofs,
+                 "lower 'Geometry/Levels' (" + std::to_string(levels) + ")" +
+                   (fitting < levels ? " to at most " + std::to_string(fitting) : std::string()) +
+                   ", or run on more processes of more nodes");
   }
 
 
@@ -370,7 +397,15 @@ namespace FoslsContact
     for (const auto &cell : discretization->get_triangulation().active_cell_iterators())
       if (cell->is_locally_owned())
         criteria[cell->active_cell_index()] = indicators->squared(cell->active_cell_index());
-    return refine_carrying(criteria, parameters.adaptivity, true);
+    // no step beyond what fits into memory (MemoryBudget), nor beyond
+    // Adaptivity/Max DoFs
+    Parameters::Adaptivity marking = parameters.adaptivity;
+    const types::global_dof_index affordable =
+      MemoryBudget(dim, true, MPI_COMM_WORLD).affordable_dofs();
+    memory_bounds_refinement = marking.max_dofs == 0 || affordable < marking.max_dofs;
+    if (memory_bounds_refinement)
+      marking.max_dofs = affordable;
+    return refine_carrying(criteria, marking, true);
   }
 
 
@@ -584,7 +619,9 @@ namespace FoslsContact
           {
             phase("Refinement", [&] { refined = refine(); });
             if (!refined)
-              adaptive_stop = "the next mesh could have more than Adaptivity/Max DoFs DoFs";
+              adaptive_stop = memory_bounds_refinement ?
+                                "the next mesh might not fit into the memory available" :
+                                "the next mesh could have more than Adaptivity/Max DoFs DoFs";
             if (!refined && !reference_pending())
               {
                 phase("Output", [&] {

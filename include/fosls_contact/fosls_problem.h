@@ -65,6 +65,12 @@ namespace FoslsContact
      */
     void assemble();
     /**
+     * Refuse, before the mesh is refined, a run whose finest level does
+     * not fit into the memory the processes may use (MemoryBudget), with
+     * the number of levels that fits.
+     */
+    void check_memory() const;
+    /**
      * Functional weights/C_compl = auto: take the weight
      * ProblemChecks::choose_compl_weight() chooses on the scene's mesh,
      * before the finest level is assembled (once: an adaptive run keeps
@@ -167,6 +173,11 @@ namespace FoslsContact
      */
     std::vector<LevelVector>             step_solutions;
     bool                                 reference_solved = false;
+    /**
+     * Whether the memory available (MemoryBudget), rather than
+     * Adaptivity/Max DoFs, bounded the last refinement.
+     */
+    bool memory_bounds_refinement = false;
     /** Why the adaptive loop stopped. */
     std::string                          adaptive_stop;
     /**

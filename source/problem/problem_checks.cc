@@ -170,13 +170,22 @@ namespace FoslsContact
         if (!gathered.here())
           return;
         result = DefinitenessCheck::run(gathered.qp());
+        // (a reference length or stress far from the body's size and
+        // stresses makes the dimensionless problem badly scaled: named
+        // first where the scene sets one)
+        const auto &      scaling = parameters.scaling;
+        const std::string cause =
+          scaling.reference_length > 0 || scaling.reference_stress > 0 ?
+            "check that 'Scaling/Reference length' and 'Reference stress' are of the "
+            "order of the body's size and stresses (or auto), and that the 'Functional "
+            "weights' are not many orders of magnitude apart" :
+            "check that the 'Functional weights' are not many orders of magnitude apart";
         AssertThrow(result.interior_definite,
                     ExcMessage("the functional's matrix without its contact DoFs is not "
                                "positive definite in floating point on level " +
                                std::to_string(level + 1) +
                                " (its Cholesky factorization failed): the functional is too "
-                               "badly conditioned for double precision; check that the "
-                               "'Functional weights' are not many orders of magnitude apart"));
+                               "badly conditioned for double precision; " + cause));
       });
       // (every process learns the outcome, so that every process stops
       // with the same line)

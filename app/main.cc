@@ -24,6 +24,7 @@
 #include <fosls_contact/fosls_problem.h>
 #include <fosls_contact/input/command_line.h>
 #include <fosls_contact/input/parameter_reader.h>
+#include <fosls_contact/input/same_input.h>
 #include <fosls_contact/output/collective_error.h>
 #include <fosls_contact/output/error_line.h>
 #include <fosls_contact/output/interruption.h>
@@ -35,6 +36,7 @@
 
 #include <csignal>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -116,6 +118,30 @@ main(int argc, char *argv[])
           reader.set(o);
       });
       const CommandLine &command_line = *arguments;
+      // every process must work on the same input (SameInput): the command
+      // line, the scene's values and the mesh file it names
+      SameInput input;
+      std::string command;
+      for (int i = 1; i < argc; ++i)
+        command += std::string(argv[i]) + '\0';
+      input.add("command line", command);
+      if (!command_line.help && !command_line.version && !command_line.scene.empty())
+        {
+          std::ostringstream values;
+          prm.print_parameters(values, dealii::ParameterHandler::PRM);
+          input.add("scene (its parameter values)", values.str());
+          prm.enter_subsection("Geometry");
+          const std::string mesh = prm.get("Shape") == "file" ? prm.get("Mesh file") : "";
+          prm.leave_subsection();
+          if (!mesh.empty())
+            {
+              std::ifstream file(mesh, std::ios::binary);
+              std::ostringstream bytes;
+              bytes << file.rdbuf();
+              input.add("mesh file (" + mesh + ")", bytes.str());
+            }
+        }
+      input.check(MPI_COMM_WORLD);
       if (command_line.help || command_line.version)
         {
           if (first_rank)

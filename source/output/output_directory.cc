@@ -147,6 +147,13 @@ namespace FoslsContact
           fail("exists and is not a directory");
         if (::access(directory.c_str(), R_OK | W_OK | X_OK) != 0)
           fail("cannot be read and written: " + FileSystem::system_error(errno));
+        // the results are published by renaming a staging directory in
+        // its place, which a mount point refuses (EBUSY): found here, not
+        // after the computation
+        struct stat above;
+        if (::stat(parent.c_str(), &above) == 0 && above.st_dev != status.st_dev)
+          fail("is a mount point, which the program cannot replace by its results (it "
+               "renames a directory in its place); name a directory inside it");
         // the run replaces the directory: only one it wrote (its list is
         // there), or one that holds nothing but output files (an earlier
         // version's), never someone's other directory (/tmp, a home)

@@ -35,10 +35,15 @@ namespace FoslsContact
                 update_values | update_normal_vectors | update_quadrature_points |
                   update_JxW_values)
       , eps(fe_values.n_quadrature_points)
-      , row(std::max(fe_values.n_quadrature_points, fe_face.n_quadrature_points))
+      // (deal.II's get_function_values() fills as many points as the
+      // vector has, so the face's values need a vector of the face's size:
+      // one of the cell's size made it read shape values past the face's
+      // points)
+      , row(fe_values.n_quadrature_points)
+      , face_row(fe_face.n_quadrature_points)
       , u(fe_face.n_quadrature_points)
       , divergence(fe_values.n_quadrature_points)
-      , sigma(row.size())
+      , sigma(std::max(fe_values.n_quadrature_points, fe_face.n_quadrature_points))
       , div_sigma(fe_values.n_quadrature_points)
       , f(dim)
     {}
@@ -50,7 +55,7 @@ namespace FoslsContact
     FEValues<dim>                        fe_values;
     FEFaceValues<dim>                    fe_face;
     std::vector<SymmetricTensor<2, dim>> eps;
-    std::vector<Tensor<1, dim>>          row, u;
+    std::vector<Tensor<1, dim>>          row, face_row, u;
     std::vector<double>                  divergence;
     std::vector<Tensor<2, dim>>          sigma;
     std::vector<Tensor<1, dim>>          div_sigma;
@@ -111,10 +116,10 @@ namespace FoslsContact
             fe_face[displacement].get_function_values(solution, scratch.u);
             for (unsigned int m = 0; m < dim; ++m)
               {
-                fe_face[FEValuesExtractors::Vector(dim + m * dim)].get_function_values(solution,
-                                                                                        row);
+                fe_face[FEValuesExtractors::Vector(dim + m * dim)].get_function_values(
+                  solution, scratch.face_row);
                 for (unsigned int q = 0; q < nf; ++q)
-                  sigma[q][m] = row[q];
+                  sigma[q][m] = scratch.face_row[q];
               }
             for (unsigned int q = 0; q < nf; ++q)
               {

@@ -4,6 +4,8 @@
 #include <fosls_contact/discretization/boundary_face_conditions.h>
 
 #include <algorithm>
+#include <iomanip>
+#include <sstream>
 
 namespace FoslsContact
 {
@@ -104,6 +106,7 @@ namespace FoslsContact
                   {
                     area += fe_face.JxW(q);
                     c += normal_component(0, q) * fe_face.JxW(q);
+                    check_obstacle_normal(fe_face.quadrature_point(q), fe_face.normal_vector(q));
                   }
                 bound_contact_face(data, face_rt);
                 boundary.contact_faces.push_back({static_cast<unsigned int>(face->index()),
@@ -116,6 +119,36 @@ namespace FoslsContact
           }
     });
     return boundary;
+  }
+
+
+  template <int dim>
+  void
+  BoundaryFaceConditions<dim>::check_obstacle_normal(const Point<dim> &    p,
+                                                     const Tensor<1, dim> &outward) const
+  {
+    // The constraint u.n_o <= g bounds the displacement toward the
+    // obstacle: an obstacle normal into the body, or along its surface,
+    // where the obstacle is near would let the body pass through it (or
+    // hold it on the wrong side, where the normal's sign changes along the
+    // contact boundary). Where the obstacle is far (a gap above 1% of the
+    // body's size, which small-strain displacements do not close), a part
+    // of the contact boundary may face away from it: the far side of a
+    // half disc over a tilted plane, whose constraint never acts.
+    constexpr double near = 0.01; // (dimensionless: of the reference length)
+    const double     along = scene.obstacle_normal(p) * outward;
+    const double     gap   = scene.gap().value(p);
+    if (along > 0 || gap > near)
+      return;
+    const double       L = scene.scaling().length;
+    std::ostringstream text;
+    text << "parameter 'Data/Obstacle normal' points "
+         << (along < 0 ? "into the body" : "along the body's surface") << " at ("
+         << Point<dim>(p * L) << ") of the contact boundary, where the obstacle is near (gap "
+         << std::setprecision(3) << gap * L
+         << "; its product with the body's outward normal is " << along
+         << "): it must point out of the body, toward the obstacle";
+    AssertThrow(false, ExcMessage(text.str()));
   }
 
 

@@ -53,6 +53,7 @@ namespace FoslsContact
 
       const bool lame        = !mu_text.empty() || !lambda_text.empty();
       const bool engineering = !e_text.empty() || !nu_text.empty();
+      given_as_e_nu          = engineering;
       AssertThrow(lame != engineering,
                   ExcMessage(std::string("subsection 'Material' needs exactly one pair of "
                                          "constants, 'mu' and 'lambda' or 'E' and 'nu'; ") +
@@ -93,6 +94,13 @@ namespace FoslsContact
           lambda          = nu == 0.5 ? std::numeric_limits<double>::infinity() :
                                         youngs_modulus * nu / ((1. + nu) * (1. - 2. * nu));
         }
+    }
+
+    std::string
+    Material::mu_source() const
+    {
+      return given_as_e_nu ? "parameters 'Material/E' and 'nu' (mu = E / (2 (1 + nu)))" :
+                             "parameter 'Material/mu'";
     }
   } // namespace Parameters
 } // namespace FoslsContact

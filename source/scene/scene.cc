@@ -68,7 +68,7 @@ namespace FoslsContact
           std::make_pair(reference.stress,
                          prm.scaling.reference_stress > 0 ?
                            std::string("parameter 'Scaling/Reference stress'") :
-                           std::string("parameter 'Material/mu'"))})
+                           prm.material.mu_source())})
       {
         std::ostringstream text;
         text << name << " = " << value

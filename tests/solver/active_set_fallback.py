@@ -1,22 +1,21 @@
 #!/usr/bin/env python3
-# The square of prm/square.prm with the obstacle normal (1, 0) at its bottom
-# side: the constraint u_x <= 0 there holds with equality and a zero
+# The square of prm/square.prm touching the obstacle without force: its top
+# pushed down by 0.01 onto an obstacle 0.01 below its bottom side (Data/Gap
+# = 0.01), so that the constraint u_n <= g holds with equality and a zero
 # multiplier at every contact DoF (the body hangs from its top side; the
 # solution is the translation u = (0, -0.01), no contact force, J at its
-# round-off level), so the primal-dual active set method's decisions are
-# round-off, and it comes back to an earlier active set, on the coarse level
-# of the default initial guess and, with Solver/Type = active set, on levels
-# 1 and 2 of the square themselves. The solver continues with its primal
-# active set method (ActiveSetDirect::primal_active_set), which cannot
-# cycle. Checked, on levels 1, 2 and 4, default settings, the active set
-# solver, the plain cycle and 2 processes: every run converges (exit code
-# 0, nothing on stderr) to that translation: the contact force is 0 (|F| <=
-# 1e-12, against 0.027 with the default normal), u_n and sigma_nn vanish at
-# every contact vertex (contact.csv, |.| <= 1e-13: 1e-11 of the push 0.01),
-# J is at most 1e-12 of its value at zero (the first J of the multigrid
-# run from a zero start, which never meets the primal-dual method; J at
-# the solution is round-off, 5e-20 to 2e-18 measured, and differs between
-# runs in its first digit) and the KKT residual is below 1e-12.
+# round-off level), and the primal-dual active set method's decisions are
+# round-off. (The primal active set method it falls back to when it comes
+# back to an earlier active set, ActiveSetDirect::primal_active_set, is
+# checked on its own by unit/active_set_cycling.) Checked, on levels 1, 2
+# and 4, default settings, the active set solver, the plain cycle and 2
+# processes: every run converges (exit code 0, nothing on stderr) to that
+# translation: the contact force is 0 (|F| <= 1e-12, against 0.027 with the
+# default gap), u_n - g and sigma_nn vanish at every contact vertex
+# (contact.csv, |.| <= 1e-13: 1e-11 of the push 0.01), J is at most 1e-12
+# of its value at zero (the first J of the multigrid run from a zero start;
+# J at the solution is round-off and differs between runs in its first
+# digit) and the KKT residual is below 1e-12.
 import csv
 import os
 import sys
@@ -25,10 +24,10 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fosls_runs import Runner, check, describe, finish
 
 R = Runner(sys.argv)
-normal = "Data/Obstacle normal=1; 0"
+touching = "Data/Gap=0.01"
 for levels in [1, 2, 4]:
-    scene = [normal, "Geometry/Levels=%d" % levels]
-    label = "square, normal (1, 0), %d level%s" % (levels, "s" if levels > 1 else "")
+    scene = [touching, "Geometry/Levels=%d" % levels]
+    label = "square, gap 0.01, %d level%s" % (levels, "s" if levels > 1 else "")
     print("=== " + label)
     zero = R.run("prm/square.prm", scene + ["Solver/Initial guess=zero"], "zero_start")
     check(zero.ok() and zero["converged"] is True,
@@ -51,9 +50,9 @@ for levels in [1, 2, 4]:
             with open(os.path.join(run.directory, "contact.csv")) as f:
                 rows = list(csv.DictReader(f))
         check(len(rows) == 2 ** (levels - 1) + 1 and
-              all(abs(float(r["u_n"])) <= 1e-13 and abs(float(r["sigma_nn"])) <= 1e-13
-                  for r in rows),
-              what + ": u_n = sigma_nn = 0 at all %d contact vertices (1e-13)"
+              all(abs(float(r["u_n"]) - float(r["gap"])) <= 1e-13
+                  and abs(float(r["sigma_nn"])) <= 1e-13 for r in rows),
+              what + ": u_n - g = sigma_nn = 0 at all %d contact vertices (1e-13)"
               % (2 ** (levels - 1) + 1))
         check(run["functional"] is not None and
               abs(run["functional"]) <= 1e-12 * zero.history[0]["functional"],

@@ -66,6 +66,13 @@ namespace FoslsContact
     BoundaryData apply(const unsigned int l, LevelData<dim> &data) const;
 
   private:
+    /**
+     * Refuse an obstacle normal at the contact boundary's point @p p
+     * (dimensionless) that does not point out of the body, whose outward
+     * normal there is @p outward.
+     */
+    void check_obstacle_normal(const Point<dim> &p, const Tensor<1, dim> &outward) const;
+
     /** A contact face: tangential tractions 0, the normal one <= 0. */
     static void bound_contact_face(LevelData<dim> &                                data,
                                    const std::array<types::global_dof_index, dim> &face_rt);

@@ -22,6 +22,15 @@ namespace FoslsContact
       double lambda = 1.; ///< +infinity for incompressible material
       double youngs_modulus = 2.5;  ///< E
       double poisson_ratio  = 0.25; ///< nu
+      /** Whether the scene gave E and nu (else mu and lambda). */
+      bool given_as_e_nu = false;
+
+      /**
+       * The parameter mu comes from, for messages: "parameter
+       * 'Material/mu'", or "parameters 'Material/E' and 'nu' (mu = E / (2
+       * (1 + nu)))".
+       */
+      std::string mu_source() const;
 
       static void declare_parameters(ParameterHandler &prm);
       void        parse_parameters(ParameterHandler &prm);

@@ -13,10 +13,10 @@
 #    on 2 processes against 1. Traction-free Neumann ids carry no force.
 #  - The contact zone (summary.json contact_zone): recomputed from
 #    contact.csv (the boundary shares of the vertices in contact, their
-#    pressures -sigma_nn) to 1e-10; on the square the whole bottom (width 1,
-#    mean pressure times width = the contact force), on the cube the whole
-#    face (area 1), on the half disc between the Hertz comparison's contact
-#    edges, with its peak.
+#    pressures -sigma_nn) to 1e-8 (the file's 10 digits); on the square the
+#    whole bottom (width 1, mean pressure times width = the contact force),
+#    on the cube the whole face (area 1), on the half disc between the Hertz
+#    comparison's contact edges, with its peak.
 #  - Scaling/Unit names: the steel roller in mm, N, MPa: the screen's force
 #    lines in N/mm, the zone in mm and MPa, summary.json "units"; the names
 #    change no number; scripts/plot.py draws the run. Bad names are refused
@@ -64,14 +64,14 @@ def check_equilibrium(run, label, volume, C_eq=100., length=1., stress=1.):
     check(relative_difference(contact, run["contact_force"]) < 1e-12,
           label + ": the contact ids' forces add up to contact_force")
     total = [sum(f[d] for f in forces.values()) for d in range(dim)]
-    check(relative_difference(total, run["boundary_force_sum"]) < 1e-12
-          or norm(total) < 1e-12 * run.force,
+    # (a sum of forces that cancel: its round-off is that of the forces,
+    # which summary.json has to 12 digits)
+    check(norm([a - b for a, b in zip(total, run["boundary_force_sum"])]) < 1e-10 * run.force,
           label + ": boundary_force_sum is the sum of the boundary forces")
     bound = math.sqrt(volume * run["functional_eq"] / C_eq) * stress / length
-    ratio = norm(run["boundary_force_sum"]) / run.force
-    print("%s: |sum| / |contact force| < 1e-6: %s, within the bound (%s of it)"
-          % (label, "yes" if ratio < 1e-6 else "no",
-             "below 1e-3" if norm(run["boundary_force_sum"]) < 1e-3 * bound else "above 1e-3"))
+    print("%s: |sum| / |contact force| = %s, |sum| / bound = %s"
+          % (label, rounded(norm(run["boundary_force_sum"]) / run.force, 2),
+             rounded(norm(run["boundary_force_sum"]) / bound, 2)))
     check(norm(run["boundary_force_sum"]) <= bound * (1. + 1e-6) + 1e-12 * run.force,
           label + ": |sum| <= |body|^(1/2) |div sigma|")
     return forces, kinds
@@ -91,9 +91,10 @@ def check_zone(run, label):
           % (label, key, rounded(zone.get(key), 6), rounded(zone.get("mean_pressure"), 6),
              rounded(zone.get("peak_pressure"), 6), zone.get("vertices_in_contact", -1),
              zone.get("contact_vertices", -1)))
-    check(relative_difference(zone.get(key), measure) < 1e-10
-          and relative_difference(zone.get("mean_pressure"), mean) < 1e-10
-          and relative_difference(zone.get("peak_pressure"), peak) < 1e-10
+    # (contact.csv has 10 digits)
+    check(relative_difference(zone.get(key), measure) < 1e-8
+          and relative_difference(zone.get("mean_pressure"), mean) < 1e-8
+          and relative_difference(zone.get("peak_pressure"), peak) < 1e-8
           and zone.get("vertices_in_contact") == len(active)
           and zone.get("contact_vertices") == len(rows),
           label + ": contact_zone as recomputed from contact.csv")
@@ -121,7 +122,7 @@ check(any(l.startswith("Contact force =") and "exerted on the body by the obstac
           for l in screen)
       and any("per unit length out of plane (plane strain), in the scene's units" in l
               for l in screen)
-      and any(l.startswith("Contact zone: width 1 (33 of 33 contact vertices in contact)")
+      and any(l.startswith("Contact zone: width 1 (17 of 17 contact vertices in contact)")
               for l in screen),
       "square: the screen states the convention, per unit length, the scene's units")
 check(s1["units"] == {"length": "", "force": "", "stress": "", "reported_force": "",
@@ -133,7 +134,7 @@ check(s2.ok() and all(relative_difference(all_forces(s2)[0][i], forces[i]) < 1e-
                       or norm(forces[i]) < 1e-10 * s1.force for i in forces)
       and relative_difference(s2["contact_zone"]["mean_pressure"],
                               zone.get("mean_pressure")) < 1e-10
-      and s2["contact_zone"]["width"] == zone.get("width"),
+      and relative_difference(s2["contact_zone"]["width"], zone.get("width")) < 1e-12,
       "square on 2 processes: the forces and the zone as on 1 (1e-10)")
 
 # the half disc (curved faces, partial contact) and its Hertz comparison
@@ -191,7 +192,8 @@ check(p.returncode == 0 and os.path.isfile(os.path.join(u.directory, "contact_pr
 # refused, one line naming the parameter
 for value, pattern in [
         ("length=mm, force=N", "does not name 'stress'"),
-        ("length=mm, force=N, stress=MPa, time=s", "names 'time'; valid names: length, force, stress"),
+        ("length=mm, force=N, stress=MPa, time=s",
+         "names 'time'; valid names: length, force, stress"),
         ("length=mm, length=m, force=N, stress=MPa", "names 'length' twice"),
         ("length=mm, force=, stress=MPa", "gives 'force' no unit"),
         ("length=mm, force=N m, stress=MPa", "gives 'force' the unit 'N m'"),

@@ -113,8 +113,10 @@ def plot_pressure(plt, summary, contact, out):
                     % (a, unit_label(summary, "length"), hertz["p0"],
                        unit_label(summary, "stress")))
             ax.set_xlim(lo, span)
-            ax.set_title("contact pressure; Hertz's peak %.4g, computed %.4g, "
-                         "l2 error %.3g" % (hertz["p0"], hertz["peak"],
+            stress = (summary.get("units") or {}).get("stress", "")
+            stress = " " + stress if stress else ""
+            ax.set_title("contact pressure; Hertz's peak %.4g%s, computed %.4g%s, "
+                         "l2 error %.3g" % (hertz["p0"], stress, hertz["peak"], stress,
                                             hertz["pressure_error"]), fontsize=9)
         ax.set_xlabel(label)
         ax.set_ylabel("contact pressure -sigma_nn" + unit_label(summary, "stress"))

@@ -320,8 +320,8 @@ namespace FoslsContact
       }
 
     // one convention for all: the traction integral, the force exerted on
-    // the body (the contact force the obstacle's push, a Dirichlet id's the
-    // reaction of the support, a Neumann id's the applied load)
+    // the body (the contact force is the obstacle's push, a Dirichlet id's
+    // force the support's reaction, a Neumann id's the applied load)
     if (scene.has_contact())
       pcout << "Contact force =" << force_text(force, force.norm(), 0) << suffix(force_unit)
             << " (exerted on the body by the obstacle)" << std::endl;
@@ -359,7 +359,7 @@ namespace FoslsContact
     pcout << std::left << std::setw(19) << "  sum" << std::right << std::setprecision(8);
     for (unsigned int d = 0; d < dim; ++d)
       pcout << ' ' << std::setw(15) << sum[d];
-    pcout << std::defaultfloat << "  (the integral of div sigma; in equilibrium "
+    pcout << std::defaultfloat << "  (the integral of div sigma: in equilibrium "
           << (scene.has_body_force() ? "minus the body force's resultant" : "0") << "; |sum| = "
           << std::setprecision(2) << (largest > 0 ? sum.norm() / largest : 0.)
           << " of the largest force)" << std::defaultfloat << std::setprecision(precision)

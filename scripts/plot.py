@@ -7,7 +7,9 @@ RUN_DIR is a run's Output/Directory (it holds contact.csv, convergence.csv
 and summary.json). Writes, into OUT_DIR (default RUN_DIR):
 
   contact_pressure.png  -sigma_nn at the contact vertices, in the scene's
-                        units, against x in 2D and against the distance
+                        units (named on the axes as summary.json's "units",
+                        Scaling/Unit names, has them), against x in 2D and
+                        against the distance
                         from the contact point in 3D; with Hertz's pressure
                         where the scene declares a Hertz comparison
                         (summary.json "hertz"), and the vertices in contact
@@ -44,6 +46,14 @@ def read_run(directory):
     return summary, history, contact
 
 
+def unit_label(summary, kind):
+    """The unit of a quantity of @p kind ("length", "stress", "functional",
+    ...) for an axis label: " [mm]" with summary.json's "units"
+    (Scaling/Unit names), " (scene units)" where they are not named."""
+    unit = (summary.get("units") or {}).get(kind, "")
+    return " [%s]" % unit if unit else " (scene units)"
+
+
 def hertz_pressure(hertz, r):
     a, p0 = hertz["a"], hertz["p0"]
     return p0 * math.sqrt(1. - (r / a) ** 2) if a and abs(r) < a else 0.
@@ -71,7 +81,7 @@ def plot_pressure(plt, summary, contact, out):
             # signed position along the contact, measured from Hertz's point
             origin = hertz["contact_point"][0] if hertz else 0.
             coordinate = [float(r["x"]) - origin for r in contact]
-            label = "x" if not hertz else "x - x_contact"
+            label = ("x" if not hertz else "x - x_contact") + unit_label(summary, "length")
         else:
             if hertz:
                 coordinate = [distance_in_plane(r, hertz, dim) for r in contact]
@@ -80,7 +90,7 @@ def plot_pressure(plt, summary, contact, out):
                           for d in range(dim)]
                 coordinate = [math.sqrt(sum((float(r["xyz"[d]]) - centre[d]) ** 2
                                             for d in range(dim))) for r in contact]
-            label = "distance from the contact point"
+            label = "distance from the contact point" + unit_label(summary, "length")
         pressure = [-float(r["sigma_nn"]) for r in contact]
         active = [r["active"].strip() == "1" for r in contact]
         order = sorted(range(len(contact)), key=lambda i: coordinate[i])
@@ -99,13 +109,17 @@ def plot_pressure(plt, summary, contact, out):
             lo = -span if dim == 2 else 0.
             xs = [lo + (span - lo) * k / 800. for k in range(801)]
             ax.plot(xs, [hertz_pressure(hertz, x) for x in xs], "--", color="tab:red",
-                    label="Hertz (a = %.4g, p0 = %.4g)" % (a, hertz["p0"]))
+                    label="Hertz (a = %.4g%s, p0 = %.4g%s)"
+                    % (a, unit_label(summary, "length"), hertz["p0"],
+                       unit_label(summary, "stress")))
             ax.set_xlim(lo, span)
-            ax.set_title("contact pressure; Hertz's peak %.4g, computed %.4g, "
-                         "l2 error %.3g" % (hertz["p0"], hertz["peak"],
+            stress = (summary.get("units") or {}).get("stress", "")
+            stress = " " + stress if stress else ""
+            ax.set_title("contact pressure; Hertz's peak %.4g%s, computed %.4g%s, "
+                         "l2 error %.3g" % (hertz["p0"], stress, hertz["peak"], stress,
                                             hertz["pressure_error"]), fontsize=9)
         ax.set_xlabel(label)
-        ax.set_ylabel("contact pressure -sigma_nn")
+        ax.set_ylabel("contact pressure -sigma_nn" + unit_label(summary, "stress"))
         ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
     fig.tight_layout()
@@ -122,6 +136,10 @@ def plot_convergence(plt, summary, history, out):
     ax.semilogy(iterations[1:], [max(c, 1e-300) for c in correction[1:]], "s-",
                 label="|x_k - x_{k-1}|_A")
     ax.set_xlabel("iteration")
+    # (the energy norm of the correction is the square root of a J)
+    unit = (summary.get("units") or {}).get("functional", "")
+    ax.set_ylabel("J" + unit_label(summary, "functional") + ", |x_k - x_{k-1}|_A"
+                  + (" [(%s)^(1/2)]" % unit if unit else ""))
     ax.set_title("%s: %d iterations, %s" % (
         summary.get("solver", "solver"), int(summary.get("iterations", 0)),
         "converged" if summary.get("converged") else "NOT converged"), fontsize=9)

@@ -355,13 +355,7 @@ namespace FoslsContact
           << ", compl " << J.complementarity << ")" << std::defaultfloat
           << std::endl;
     run_summary.note_functional_round_off(J.total, row.functional_start, *indicators);
-    if (scene.has_contact())
-      {
-        pcout << "Contact force =";
-        for (unsigned int d = 0; d < dim; ++d)
-          pcout << ' ' << std::setprecision(8) << force[d];
-        pcout << std::defaultfloat << std::endl;
-      }
+    run_summary.add_forces(summary, post, cartesian, force);
     row.reference = reference_solved;
     if (parameters.adaptivity.reference_refinements > 0)
       {

@@ -101,13 +101,19 @@ namespace FoslsContact
 
 
   template <int dim>
-  Tensor<1, dim>
-  Postprocessor<dim>::contact_force(const LevelVector &solution) const
+  std::map<types::boundary_id, Tensor<1, dim>>
+  Postprocessor<dim>::boundary_forces(const LevelVector &solution) const
   {
-    const auto &          scene = discretization.get_scene();
-    Tensor<1, dim>        force;
-    if (!scene.has_contact())
-      return force;
+    // every id of the scene, on every process (a process may have no face
+    // of an id, and each sum below is collective)
+    const auto &                                 conditions = parameters.boundary_conditions;
+    std::map<types::boundary_id, Tensor<1, dim>> forces;
+    for (const auto &ids :
+         {conditions.dirichlet_ids, conditions.neumann_ids, conditions.contact_ids})
+      for (const unsigned int id : ids)
+        forces[id] = Tensor<1, dim>();
+    // sigma n is constant on a flat face (an RT0 flux); the third point
+    // covers a curved face's mapping
     const QGauss<dim - 1> quadrature(3);
     FEFaceValues<dim>     fe_face(mapping,
                               discretization.get_fe(),
@@ -120,17 +126,37 @@ namespace FoslsContact
          discretization.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
       for (const unsigned int f : cell->face_indices())
-        if (cell->at_boundary(f) && scene.is_contact(cell->face(f)->boundary_id()))
+        if (cell->at_boundary(f))
           {
+            const auto force = forces.find(cell->face(f)->boundary_id());
+            if (force == forces.end())
+              continue;
             fe_face.reinit(cell, f);
             fe_face.get_function_values(solution, values);
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               for (unsigned int m = 0; m < dim; ++m)
                 for (unsigned int k = 0; k < dim; ++k)
-                  force[m] += values[q][dim + m * dim + k] *
-                              fe_face.normal_vector(q)[k] * fe_face.JxW(q);
+                  force->second[m] += values[q][dim + m * dim + k] *
+                                      fe_face.normal_vector(q)[k] * fe_face.JxW(q);
           }
-    return Utilities::MPI::sum(force, discretization.get_communicator());
+    for (auto &[id, force] : forces)
+      force = Utilities::MPI::sum(force, discretization.get_communicator());
+    return forces;
+  }
+
+
+  template <int dim>
+  Tensor<1, dim>
+  Postprocessor<dim>::contact_force(const LevelVector &solution) const
+  {
+    const auto &   scene = discretization.get_scene();
+    Tensor<1, dim> force;
+    if (!scene.has_contact())
+      return force;
+    for (const auto &[id, part] : boundary_forces(solution))
+      if (scene.is_contact(id))
+        force += part;
+    return force;
   }
 
 

@@ -30,6 +30,17 @@ namespace FoslsContact
                         Patterns::Anything(),
                         "The stress S the program divides all stresses by, in the "
                         "scene's units: a number > 0, or auto: the shear modulus mu.");
+      prm.declare_entry("Unit names",
+                        "",
+                        Patterns::Anything(),
+                        "The names of the scene's units, e.g. 'length=mm, force=N, "
+                        "stress=MPa' (each of length, force and stress once), or empty: "
+                        "the scene's units, unnamed. They label the answers on the "
+                        "screen, in summary.json (units) and on the axes of "
+                        "scripts/plot.py; in 2D a force is per unit length out of plane "
+                        "(N/mm). Labels only: the scene's numbers must be in these units, "
+                        "and consistent (stress = force / length^2), which the program "
+                        "does not check.");
       prm.leave_subsection();
     }
 
@@ -39,6 +50,7 @@ namespace FoslsContact
       prm.enter_subsection("Scaling");
       const std::string length_text = Utilities::trim(prm.get("Reference length"));
       const std::string stress_text = Utilities::trim(prm.get("Reference stress"));
+      const std::string unit_text   = prm.get("Unit names");
       prm.leave_subsection();
       auto parse = [](const std::string &text, const std::string &name) {
         if (text == "auto")
@@ -51,6 +63,7 @@ namespace FoslsContact
       };
       reference_length = parse(length_text, "Scaling/Reference length");
       reference_stress = parse(stress_text, "Scaling/Reference stress");
+      unit_names.parse(unit_text, "Scaling/Unit names");
     }
   } // namespace Parameters
 } // namespace FoslsContact

@@ -3,6 +3,7 @@
 
 #include <fosls_contact/build_info.h>
 #include <fosls_contact/output/contact_table.h>
+#include <fosls_contact/output/contact_zone.h>
 #include <fosls_contact/output/hertz_comparison.h>
 #include <fosls_contact/output/json.h>
 #include <fosls_contact/problem/run_summary.h>
@@ -11,12 +12,49 @@
 #include <algorithm>
 #include <iomanip>
 #include <numeric>
+#include <sstream>
+#include <tuple>
 
 namespace FoslsContact
 {
   namespace
   {
     const auto number = json_number;
+
+    /** A vector as a JSON array. */
+    template <int dim>
+    std::string
+    json_vector(const Tensor<1, dim> &v)
+    {
+      std::vector<std::string> items;
+      for (unsigned int d = 0; d < dim; ++d)
+        items.push_back(number(v[d]));
+      return json_array(items);
+    }
+
+    /**
+     * A force for the screen: 8 significant digits, components below 1e-12
+     * of @p scale (the largest force) as 0 (round-off: the screen's
+     * "-9.08e-13 4089.3683" was the force (0, 4089.3683)), each in a column
+     * of @p width + 1.
+     */
+    template <int dim>
+    std::string
+    force_text(const Tensor<1, dim> &f, const double scale, const int width = 15)
+    {
+      std::ostringstream out;
+      out << std::setprecision(8);
+      for (unsigned int d = 0; d < dim; ++d)
+        out << ' ' << std::setw(width) << (std::abs(f[d]) < 1e-12 * scale ? 0. : f[d]);
+      return out.str();
+    }
+
+    /** " mm": @p unit after a number, or nothing for an unnamed unit. */
+    std::string
+    suffix(const std::string &unit)
+    {
+      return unit.empty() ? "" : " " + unit;
+    }
   } // namespace
 
 
@@ -232,6 +270,14 @@ namespace FoslsContact
     summary["functional_dimensionless"] = number(J_hat.total);
     summary["scaling"] = "{\"length\": " + number(scene.scaling().length) +
                          ", \"stress\": " + number(scene.scaling().stress) + "}";
+    // the names of the units (empty: the scene's units, unnamed), and
+    // those of the answers made of them
+    const Parameters::UnitNames &units = parameters.scaling.unit_names;
+    summary["units"] = "{\"length\": \"" + units.length + "\", \"force\": \"" + units.force +
+                       "\", \"stress\": \"" + units.stress + "\", \"reported_force\": \"" +
+                       units.reported_force(dim) + "\", \"contact_measure\": \"" +
+                       units.contact_measure(dim) + "\", \"functional\": \"" +
+                       units.functional(dim) + "\"}";
     const auto &m      = parameters.material;
     summary["material"] = "{\"mu\": " + number(m.mu) + ", \"lambda\": " +
                           (std::isinf(m.lambda) ? std::string("\"inf\"") : number(m.lambda)) +
@@ -251,6 +297,103 @@ namespace FoslsContact
     summary["max_displacement"] = number(maxima.displacement);
     summary["max_von_mises"]    = number(maxima.von_mises);
     return J;
+  }
+
+
+  template <int dim>
+  void
+  RunSummary<dim>::add_forces(Summary &                 summary,
+                              const Postprocessor<dim> &post,
+                              const LevelVector &       cartesian,
+                              const Tensor<1, dim> &    force) const
+  {
+    const Parameters::UnitNames &units      = parameters.scaling.unit_names;
+    const std::string            force_unit = units.reported_force(dim);
+    const auto                   precision  = pcout.get_stream().precision();
+    const auto                   forces     = post.boundary_forces(cartesian); // (collective)
+    double                       largest    = 0;
+    Tensor<1, dim>               sum;
+    for (const auto &[id, f] : forces)
+      {
+        largest = std::max(largest, f.norm());
+        sum += f;
+      }
+
+    // one convention for all: the traction integral, the force exerted on
+    // the body (the contact force is the obstacle's push, a Dirichlet id's
+    // force the support's reaction, a Neumann id's the applied load)
+    if (scene.has_contact())
+      pcout << "Contact force =" << force_text(force, force.norm(), 0) << suffix(force_unit)
+            << " (exerted on the body by the obstacle)" << std::endl;
+    pcout << "Boundary forces: the integral of sigma n over each boundary id (n the body's "
+             "outward normal), the force exerted on the body there"
+          << (dim == 2 ? "; per unit length out of plane (plane strain)" : "") << ", in "
+          << (units.named() ? force_unit :
+                              std::string("the scene's units") +
+                                (dim == 2 ? " (force per unit length)" : ""))
+          << std::endl;
+    // by condition: contact, Dirichlet (reactions), Neumann (loads)
+    const std::vector<std::tuple<std::string, std::string, std::vector<unsigned int>>> kinds = {
+      {"contact", "contact  ", parameters.boundary_conditions.contact_ids},
+      {"dirichlet", "Dirichlet", parameters.boundary_conditions.dirichlet_ids},
+      {"neumann", "Neumann  ", parameters.boundary_conditions.neumann_ids}};
+    std::string json = "{";
+    for (const auto &[key, label, ids] : kinds)
+      {
+        json += std::string(json.size() > 1 ? ", " : "") + "\"" + key + "\": {";
+        std::vector<unsigned int> sorted = ids;
+        std::sort(sorted.begin(), sorted.end());
+        for (unsigned int i = 0; i < sorted.size(); ++i)
+          {
+            const Tensor<1, dim> &f = forces.at(sorted[i]);
+            json += std::string(i ? ", " : "") + "\"" + std::to_string(sorted[i]) +
+                    "\": " + json_vector<dim>(f);
+            pcout << "  " << label << " id " << std::left << std::setw(4) << sorted[i]
+                  << std::right << force_text(f, largest)
+                  << (key == "dirichlet" ? "  (reaction)" : "") << std::endl;
+          }
+        json += "}";
+      }
+    summary["boundary_forces"]    = json + "}";
+    summary["boundary_force_sum"] = json_vector<dim>(sum);
+    pcout << std::left << std::setw(19) << "  sum" << std::right << std::setprecision(8);
+    for (unsigned int d = 0; d < dim; ++d)
+      pcout << ' ' << std::setw(15) << sum[d];
+    pcout << std::defaultfloat << "  (the integral of div sigma: in equilibrium "
+          << (scene.has_body_force() ? "minus the body force's resultant" : "0") << "; |sum| = "
+          << std::setprecision(2) << (largest > 0 ? sum.norm() / largest : 0.)
+          << " of the largest force)" << std::defaultfloat << std::setprecision(precision)
+          << std::endl;
+
+    if (!scene.has_contact())
+      return;
+    // (the contact table is gathered on the first process, which prints
+    // and writes)
+    const ContactZone<dim> zone(ContactTable<dim>(discretization).rows(solution));
+    const char *           measure = dim == 2 ? "width" : "area";
+    std::vector<std::string> peak_position;
+    for (unsigned int d = 0; d < dim; ++d)
+      peak_position.push_back(number(zone.peak_position()[d]));
+    summary["contact_zone"] =
+      std::string("{\"") + measure + "\": " + number(zone.measure()) +
+      ", \"mean_pressure\": " + number(zone.mean_pressure()) +
+      ", \"peak_pressure\": " + number(zone.peak_pressure()) +
+      ", \"peak_position\": " + json_array(peak_position) +
+      ", \"vertices_in_contact\": " + std::to_string(zone.vertices_in_contact()) +
+      ", \"contact_vertices\": " + std::to_string(zone.vertices()) + "}";
+    pcout << "Contact zone: " << measure << ' ' << std::setprecision(6) << zone.measure()
+          << suffix(units.contact_measure(dim)) << " (" << zone.vertices_in_contact() << " of "
+          << zone.vertices() << " contact vertices in contact), mean pressure "
+          << zone.mean_pressure() << suffix(units.stress) << ", peak pressure "
+          << zone.peak_pressure() << suffix(units.stress) << " at (";
+    // (a coordinate below 1e-12 L is round-off of the mesh's mapping: 0)
+    for (unsigned int d = 0; d < dim; ++d)
+      pcout << (d ? ", " : "")
+            << (std::abs(zone.peak_position()[d]) < 1e-12 * scene.scaling().length ?
+                  0. :
+                  zone.peak_position()[d]);
+    pcout << ')' << suffix(units.length) << std::defaultfloat << std::setprecision(precision)
+          << std::endl;
   }
 
 

@@ -27,7 +27,8 @@ REQUIRED_FILES = ["solution_0000.pvtu", "contact.csv",
                   "convergence.csv", "summary.json", "used_parameters.prm"]
 REQUIRED_KEYS = ["dofs", "levels", "iterations", "converged", "rate_asymptotic",
                  "functional", "functional_eq", "functional_const",
-                 "functional_compl", "contact_force", "kkt_residual",
+                 "functional_compl", "contact_force", "boundary_forces",
+                 "boundary_force_sum", "units", "kkt_residual",
                  "time_setup_s", "time_solve_s", "peak_rss_mb"]
 
 

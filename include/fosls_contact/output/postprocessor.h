@@ -63,8 +63,22 @@ namespace FoslsContact
     const Mapping<dim> &get_mapping() const { return mapping; }
 
     /**
-     * Total contact force: the integral of sigma n over Gamma_C, of the
-     * solution_in_scene_units().
+     * The resultant of the traction on each boundary id of the scene
+     * (Dirichlet, Neumann and contact ids): the integral of sigma n over
+     * the id's faces, with sigma the computed stress and n the body's
+     * outward normal, of the solution_in_scene_units(). It is the force
+     * that the body's surroundings (the obstacle, the support, the load)
+     * exert on the body there; in 2D per unit length out of plane. By the
+     * divergence theorem their sum is the integral of div sigma over the
+     * body, the equilibrium residual's resultant (0 in equilibrium without
+     * body force). Collective.
+     */
+    std::map<types::boundary_id, Tensor<1, dim>>
+    boundary_forces(const LevelVector &solution) const;
+
+    /**
+     * Total contact force: the boundary_forces() of the contact ids, added
+     * (collective).
      */
     Tensor<1, dim> contact_force(const LevelVector &solution) const;
 

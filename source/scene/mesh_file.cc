@@ -4,6 +4,7 @@
 #include <fosls_contact/input/input_error.h>
 #include <fosls_contact/input/text_file.h>
 #include <fosls_contact/output/error_line.h>
+#include <fosls_contact/scene/mesh_check.h>
 #include <fosls_contact/scene/mesh_file.h>
 
 #include <algorithm>
@@ -240,8 +241,21 @@ namespace FoslsContact
                                            "the extension '." + ErrorLine::quote(type, 20) + "'") +
                            "; read are " + known));
     AssertThrow(!Utilities::trim(text).empty(), ExcMessage(name() + " is empty"));
+    // a UTF-8 byte order mark and CRLF line ends (of Windows editors) read
+    // as the text they stand for, in every format
+    if (text.rfind("\xEF\xBB\xBF", 0) == 0)
+      text.erase(0, 3);
+    std::string plain;
+    plain.reserve(text.size());
+    for (std::size_t i = 0; i < text.size(); ++i)
+      if (text[i] != '\r' || i + 1 == text.size() || text[i + 1] != '\n')
+        plain += text[i];
+    text.swap(plain);
     const std::string reason = check_text(text, type);
     AssertThrow(reason.empty(), ExcMessage(name() + " cannot be read: " + reason));
+    // what deal.II's readers would crash, hang or be misled on
+    const MeshCheck check(text, type, dim);
+    AssertThrow(check.problem().empty(), ExcMessage(name() + check.problem()));
 
     try
       {

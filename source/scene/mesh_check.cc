@@ -839,10 +839,14 @@ namespace FoslsContact
             const std::string why = finish();
             if (!why.empty())
               return why;
-            block = t.rfind("**", 0) == 0       ? block :
-                    t.rfind("*NODE", 0) == 0    ? "node" :
-                    t.rfind("*ELEMENT", 0) == 0 ? "element" :
-                                                  "";
+            // (not *NODE OUTPUT, *ELEMENT OUTPUT, ...: "*NODE" or "*NODE,...")
+            auto is = [&t](const std::string &keyword) {
+              return t == keyword || t.rfind(keyword + ",", 0) == 0;
+            };
+            block = t.rfind("**", 0) == 0 ? block :
+                    is("*NODE")           ? "node" :
+                    is("*ELEMENT")        ? "element" :
+                                            "";
             continue;
           }
         if (block == "node")

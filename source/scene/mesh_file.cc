@@ -369,6 +369,10 @@ namespace FoslsContact
   MeshFile<dim>::other_dimension(const std::string &text, const std::string &type) const
   {
     constexpr int other = dim == 2 ? 3 : 2;
+    // (a file GridIn would crash or hang on as a mesh of the other
+    // dimension is not read as one)
+    if (!MeshCheck(text, type, other).problem().empty())
+      return "";
     Triangulation<other> tria;
     try
       {

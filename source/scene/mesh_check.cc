@@ -1111,8 +1111,9 @@ namespace FoslsContact
             if (!in)
               continue;
             if (owner[p] >= nodes.size())
-              return "has overlapping cells: " + describe(cells[mesh_cells[owner[p] - nodes.size()]]) +
-                     " and " + describe(cell) + " overlap (the centre of one lies in the other)";
+              return "has overlapping cells: " +
+                     describe(cells[mesh_cells[owner[p] - nodes.size()]]) + " and " +
+                     describe(cell) + " overlap (the centre of one lies in the other)";
             const Node &node = nodes[owner[p]];
             if (on == dim)
               {
@@ -1129,9 +1130,9 @@ namespace FoslsContact
                     if (a < b)
                       nearest = v;
                   }
-                return "has the point " + format(x, dim) + " twice, as " + describe(nodes[nearest]) +
-                       " and " + describe(node) + ": the cells are not connected there (merge "
-                                                  "the two " + node_word + "s)";
+                return "has the point " + format(x, dim) + " twice, as " +
+                       describe(nodes[nearest]) + " and " + describe(node) +
+                       ": the cells are not connected there (merge the two " + node_word + "s)";
               }
             if (on > 0)
               return "is not conforming: " + describe(node) + " lies on " +

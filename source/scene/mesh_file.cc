@@ -241,15 +241,17 @@ namespace FoslsContact
                                            "the extension '." + ErrorLine::quote(type, 20) + "'") +
                            "; read are " + known));
     AssertThrow(!Utilities::trim(text).empty(), ExcMessage(name() + " is empty"));
-    // a UTF-8 byte order mark and CRLF line ends (of Windows editors) read
-    // as the text they stand for, in every format
+    // a UTF-8 byte order mark and CRLF (or CR) line ends read as the text
+    // they stand for, in every format
     if (text.rfind("\xEF\xBB\xBF", 0) == 0)
       text.erase(0, 3);
     std::string plain;
     plain.reserve(text.size());
     for (std::size_t i = 0; i < text.size(); ++i)
-      if (text[i] != '\r' || i + 1 == text.size() || text[i + 1] != '\n')
+      if (text[i] != '\r')
         plain += text[i];
+      else if (i + 1 == text.size() || text[i + 1] != '\n')
+        plain += '\n';
     text.swap(plain);
     const std::string reason = check_text(text, type);
     AssertThrow(reason.empty(), ExcMessage(name() + " cannot be read: " + reason));

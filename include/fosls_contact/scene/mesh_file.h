@@ -24,8 +24,9 @@ namespace FoslsContact
    *
    * GridIn trusts the nodes and cells of the file: MeshCheck reads them
    * before it does (indices, counts, coordinates, cells twice, hanging
-   * nodes, overlaps). A UTF-8 byte order mark and CRLF line ends are
-   * removed first: GridIn's VTK reader compares its header lines whole.
+   * nodes, overlaps). A UTF-8 byte order mark and CRLF (or CR) line ends
+   * are made plain first: GridIn's VTK reader compares its header lines
+   * whole.
    *
    * What GridIn cannot say in terms of the file is checked here, so that
    * every problem is one line that names the file: a file that cannot be

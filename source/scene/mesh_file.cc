@@ -4,6 +4,7 @@
 #include <fosls_contact/input/input_error.h>
 #include <fosls_contact/input/text_file.h>
 #include <fosls_contact/output/error_line.h>
+#include <fosls_contact/scene/mesh_check.h>
 #include <fosls_contact/scene/mesh_file.h>
 
 #include <algorithm>
@@ -240,8 +241,23 @@ namespace FoslsContact
                                            "the extension '." + ErrorLine::quote(type, 20) + "'") +
                            "; read are " + known));
     AssertThrow(!Utilities::trim(text).empty(), ExcMessage(name() + " is empty"));
+    // a UTF-8 byte order mark and CRLF (or CR) line ends read as the text
+    // they stand for, in every format
+    if (text.rfind("\xEF\xBB\xBF", 0) == 0)
+      text.erase(0, 3);
+    std::string plain;
+    plain.reserve(text.size());
+    for (std::size_t i = 0; i < text.size(); ++i)
+      if (text[i] != '\r')
+        plain += text[i];
+      else if (i + 1 == text.size() || text[i + 1] != '\n')
+        plain += '\n';
+    text.swap(plain);
     const std::string reason = check_text(text, type);
     AssertThrow(reason.empty(), ExcMessage(name() + " cannot be read: " + reason));
+    // what deal.II's readers would crash, hang or be misled on
+    const MeshCheck check(text, type, dim);
+    AssertThrow(check.problem().empty(), ExcMessage(name() + check.problem()));
 
     try
       {
@@ -355,6 +371,10 @@ namespace FoslsContact
   MeshFile<dim>::other_dimension(const std::string &text, const std::string &type) const
   {
     constexpr int other = dim == 2 ? 3 : 2;
+    // (a file GridIn would crash or hang on as a mesh of the other
+    // dimension is not read as one)
+    if (!MeshCheck(text, type, other).problem().empty())
+      return "";
     Triangulation<other> tria;
     try
       {

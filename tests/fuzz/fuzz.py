@@ -1,7 +1,7 @@
 """Fuzz the command line, the scene files and the parameter values of
 fosls-contact.
 
-usage: fuzz.py FOSLS_CONTACT SOURCE_DIR [--cases N] [--seed S] [--jobs J]
+usage: fuzz.py FOSLS_CONTACT SOURCE_DIR [--cases N] [--mesh-cases M] [--seed S] [--jobs J]
 
 Generates N cases (default 600) with a fixed seed (default 1) from the
 scenes in tests/scenes (Geometry/Levels = 2, at most 20 iterations, one
@@ -20,6 +20,21 @@ whose stderr is not exactly one line `fosls-contact: error in ...` without
 raw control bytes, output files (or a staging directory, a lock file)
 left after an error, or a run with exit code 0 or 2 without its
 summary.json, or with something on stderr beyond the one line of exit 2.
+
+Then M mesh cases (default 150; --mesh-cases M, drawn with a random
+generator of their own so that the cases above stay the same): a small
+structured mesh of quadrilaterals or hexahedra (Geometry/Shape = file,
+the whole boundary clamped) written as Gmsh 2.2, Gmsh 4.1, VTK, AVS UCD
+or Abaqus, with one corruption drawn: a node index past the nodes or
+negative, a cell listed twice (same order, rotated, reversed), a cell
+refined alone (hanging nodes), a cell moved by half its size (overlap), a
+shared node split in two at one point (a crack), z != 0 in 2D, a
+coordinate that is no finite number or missing, a Gmsh header of another
+version than its body, a truncation at a random byte; or none, or a UTF-8
+byte order mark and CRLF line ends. Beyond the failures above, a mesh
+case fails if a corruption that must be refused (all but the truncation)
+runs (exit code other than 1), or if a valid mesh (none, BOM and CRLF) is
+refused (exit code 1).
 
 Prints the number of cases and of failures of each kind (all 0 when the
 program is right); every failing case is printed with the command that
@@ -251,6 +266,182 @@ def make_case(rng, number, source, entries):
     return arguments, files, kind
 
 
+MESH_CORRUPTIONS = ["index past", "index negative", "cell twice", "cell twice rotated",
+                    "cell twice reversed", "hanging nodes", "overlap", "point twice", "off plane",
+                    "coordinate", "version", "truncation", "none", "bom crlf"]
+# corruptions a run may take (a truncation can leave a mesh whole); the others must be refused
+MESH_VALID = ["none", "bom crlf"]
+MESH_FORMATS = ["msh2", "msh41", "vtk", "ucd", "inp"]
+COORDINATES = ["nan", "NaN", "inf", "-inf", "1e400", "-1e999", "abc", "1.5.2", "0x", None]
+
+
+def structured_mesh(rng, dim):
+    """Points and cells (node indices in the cyclic order of the file formats) of a grid
+    of 2 to 3 cells a side, of cell size h."""
+    n = [rng.randint(2, 3)] + [rng.randint(1, 3) for _ in range(dim - 1)]
+    h = rng.choice([1.0, 0.25, 2.0 ** -10])  # (powers of 2: the children's nodes exact)
+    index = {}
+    points = []
+    for k in range((n[2] + 1) if dim == 3 else 1):
+        for j in range(n[1] + 1):
+            for i in range(n[0] + 1):
+                index[(i, j, k)] = len(points)
+                points.append([i * h, j * h, k * h])
+    ring = [(0, 0), (1, 0), (1, 1), (0, 1)]
+    cells = []
+    for k in range(n[2] if dim == 3 else 1):
+        for j in range(n[1]):
+            for i in range(n[0]):
+                layers = [0, 1] if dim == 3 else [0]
+                cells.append([index[(i + a, j + b, k + c)] for c in layers for a, b in ring])
+    return points, cells, h
+
+
+def corrupt_mesh(rng, dim, points, cells, h, corruption):
+    """Apply @p corruption to the mesh (in place, on the node indices and positions)."""
+    c = rng.randrange(len(cells))
+    corners = 2 ** dim
+    if corruption == "index past":
+        cells[c][rng.randrange(corners)] = len(points) + rng.randint(0, 3)
+    elif corruption == "index negative":
+        cells[c][rng.randrange(corners)] = -rng.randint(2, 5)
+    elif corruption.startswith("cell twice"):
+        cell = list(cells[c])
+        if corruption.endswith("rotated"):
+            r = rng.randint(1, 3)
+            cell = cell[r:4] + cell[:r] + (cell[4 + r:] + cell[4:4 + r] if dim == 3 else [])
+        elif corruption.endswith("reversed"):
+            cell = cell[4:] + cell[:4] if dim == 3 else cell[::-1]
+        cells.insert(rng.randrange(len(cells) + 1), cell)
+    elif corruption == "hanging nodes":
+        # cell c in 2^dim children, its neighbours whole
+        low = points[cells[c][0]]
+        known = {tuple(p): i for i, p in enumerate(points)}
+
+        def node(a, b, e):
+            x = (low[0] + a * h / 2, low[1] + b * h / 2, low[2] + e * h / 2)
+            if x not in known:
+                known[x] = len(points)
+                points.append(list(x))
+            return known[x]
+        children = []
+        for e in range(2 if dim == 3 else 1):
+            for b in range(2):
+                for a in range(2):
+                    layers = [0, 1] if dim == 3 else [0]
+                    children.append([node(a + da, b + db, e + dc) for dc in layers
+                                     for da, db in [(0, 0), (1, 0), (1, 1), (0, 1)]])
+        cells[c:c + 1] = children
+    elif corruption == "overlap":
+        shift = [h / 2, h / 3, h / 4 if dim == 3 else 0]
+        moved = []
+        for v in cells[c]:
+            moved.append(len(points))
+            points.append([points[v][d] + shift[d] for d in range(3)])
+        cells.append(moved)
+    elif corruption == "point twice":
+        # a node of two cells or more, split: cell c gets a copy at the same point
+        shared = [v for v in cells[c] if sum(v in other for other in cells) > 1]
+        v = rng.choice(shared)
+        points.append(list(points[v]))
+        cells[c][cells[c].index(v)] = len(points) - 1
+    elif corruption == "off plane":
+        points[rng.choice(cells[c])][2] = rng.choice([0.1, -1e-3, 1e3]) * h
+
+
+def write_mesh(rng, dim, points, cells, form, coordinate=None, version=None):
+    """The text of the mesh in @p form; @p coordinate replaces (or, None, drops) one
+    coordinate of a node; @p version is a Gmsh header's other version."""
+    bad = rng.randrange(len(points)) if coordinate is not False else -1
+    bad_axis = rng.randrange(3 if form in ("msh2", "msh41", "vtk", "ucd") or dim == 3 else 2)
+
+    def xyz(i, axes=3):
+        words = [repr(x) for x in points[i][:axes]]
+        if i == bad:
+            if coordinate is None:
+                del words[bad_axis]
+            else:
+                words[bad_axis] = coordinate
+        return words
+    hexahedron = dim == 3
+    if form in ("msh2", "msh41"):
+        header = version or ("2.2" if form == "msh2" else "4.1")
+        text = "$MeshFormat\n%s 0 8\n$EndMeshFormat\n" % header
+        if form == "msh2":
+            text += "$Nodes\n%d\n" % len(points)
+            text += "".join("%d %s\n" % (i + 1, " ".join(xyz(i))) for i in range(len(points)))
+            text += "$EndNodes\n$Elements\n%d\n" % len(cells)
+            text += "".join("%d %d 2 0 1 %s\n" % (k + 1, 5 if hexahedron else 3,
+                                                 " ".join(str(v + 1) for v in cell))
+                            for k, cell in enumerate(cells))
+            return text + "$EndElements\n"
+        text += "$Entities\n0 0 %d %d\n" % ((0, 1) if hexahedron else (1, 0))
+        text += ("1 0 0 0 1 1 1 0 0\n" if not hexahedron else "1 0 0 0 1 1 1 0 0\n")
+        text += "$EndEntities\n"
+        text += "$Nodes\n1 %d 1 %d\n%d 1 0 %d\n" % (len(points), len(points), dim, len(points))
+        text += "".join("%d\n" % (i + 1) for i in range(len(points)))
+        text += "".join("%s\n" % " ".join(xyz(i)) for i in range(len(points)))
+        text += "$EndNodes\n$Elements\n1 %d 1 %d\n%d 1 %d %d\n" % (
+            len(cells), len(cells), dim, 5 if hexahedron else 3, len(cells))
+        text += "".join("%d %s\n" % (k + 1, " ".join(str(v + 1) for v in cell))
+                        for k, cell in enumerate(cells))
+        return text + "$EndElements\n"
+    if form == "vtk":
+        text = "# vtk DataFile Version 3.0\nfuzz\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+        text += "POINTS %d double\n" % len(points)
+        text += "".join("%s\n" % " ".join(xyz(i)) for i in range(len(points)))
+        text += "\nCELLS %d %d\n" % (len(cells), (1 + 2 ** dim) * len(cells))
+        text += "".join("%d %s\n" % (len(cell), " ".join(str(v) for v in cell)) for cell in cells)
+        text += "\nCELL_TYPES %d\n" % len(cells)
+        return text + "".join("%d\n" % (12 if hexahedron else 9) for _ in cells)
+    if form == "ucd":
+        text = "# fuzz\n%d %d 0 0 0\n" % (len(points), len(cells))
+        text += "".join("%d %s\n" % (i + 1, " ".join(xyz(i))) for i in range(len(points)))
+        return text + "".join("%d 0 %s %s\n" % (k + 1, "hex" if hexahedron else "quad",
+                                                 " ".join(str(v + 1) for v in cell))
+                              for k, cell in enumerate(cells))
+    # Abaqus
+    axes = 3 if dim == 3 or any(p[2] != 0 for p in points) else 2
+    text = "*HEADING\nfuzz\n*NODE\n"
+    text += "".join("%d, %s\n" % (i + 1, ", ".join(xyz(i, axes))) for i in range(len(points)))
+    text += "*ELEMENT, TYPE=%s, ELSET=EB1\n" % ("C3D8" if hexahedron else "CPE4")
+    return text + "".join("%d, %s\n" % (k + 1, ", ".join(str(v + 1) for v in cell))
+                          for k, cell in enumerate(cells))
+
+
+def make_mesh_case(rng, source):
+    """(arguments, {file name: bytes}, kind) of a mesh case; kind is 'mesh <corruption>'."""
+    dim = rng.choice([2, 2, 3])
+    corruption = rng.choice(MESH_CORRUPTIONS)
+    if corruption == "off plane" and dim == 3:
+        corruption = "none"
+    form = rng.choice(MESH_FORMATS)
+    if corruption == "version":
+        form = rng.choice(["msh2", "msh41"])
+    points, cells, h = structured_mesh(rng, dim)
+    corrupt_mesh(rng, dim, points, cells, h, corruption)
+    text = write_mesh(rng, dim, points, cells, form,
+                      rng.choice(COORDINATES) if corruption == "coordinate" else False,
+                      ({"msh2": "4.1", "msh41": "2.2"}[form] if corruption == "version" else None))
+    data = text.encode()
+    if corruption == "truncation":
+        data = data[:rng.randrange(len(data))]
+    elif corruption == "bom crlf":
+        data = rng.choice([b"\xef\xbb\xbf", b""]) + data.replace(b"\n", b"\r\n")
+    extension = {"msh2": "msh", "msh41": "msh"}.get(form, form)
+    scene = "cube3d.prm" if dim == 3 else "hertz.prm"
+    with open(os.path.join(source, "tests/scenes", scene)) as f:
+        files = {"scene.prm": f.read().encode(), "mesh." + extension: data}
+    arguments = ["scene.prm", "--set", "Geometry/Levels=2", "--set", "Solver/Max iterations=20",
+                 "--set", "Solver/Threads=1", "--set", "Output/Directory=out",
+                 "--set", "Output/Verbose=false", "--set", "Geometry/Shape=file",
+                 "--set", "Geometry/Mesh file=mesh." + extension,
+                 "--set", "Boundary conditions/Dirichlet boundary ids=0",
+                 "--set", "Boundary conditions/Neumann boundary ids=",
+                 "--set", "Boundary conditions/Contact boundary ids="]
+    return arguments, files, "mesh " + corruption
+
+
 def listing(directory):
     found = []
     for root, dirs, names in os.walk(directory):
@@ -276,6 +467,12 @@ def run_case(number, arguments, files, kind):
     except subprocess.TimeoutExpired:
         return number, "hang", command, "no end within %d s" % TIMEOUT
     after = listing(directory)
+    if kind.startswith("mesh ") and rc >= 0:
+        valid = kind[5:] in MESH_VALID
+        if valid and rc == 1:
+            return number, "good mesh refused", command, repr(err[:300])
+        if not valid and kind != "mesh truncation" and rc != 1:
+            return number, "bad mesh accepted", command, "exit code %d" % rc
     lines = err.split(b"\n")[:-1] if err.endswith(b"\n") else err.split(b"\n")
     raw = [c for c in err[:-1] if c < 0x20 or c == 0x7f]
     leftovers = [n for n in after if re.search(r"\.staging-|\.lock$", n)]
@@ -312,7 +509,7 @@ def run_case(number, arguments, files, kind):
 def main():
     global EXE
     arguments = sys.argv[1:]
-    options = {"--cases": "600", "--seed": "1", "--jobs": "2"}
+    options = {"--cases": "600", "--mesh-cases": "150", "--seed": "1", "--jobs": "2"}
     while len(arguments) > 2:
         value = arguments.pop()
         options[arguments.pop()] = value
@@ -320,14 +517,18 @@ def main():
     rng = random.Random(int(options["--seed"]))
     entries = catalogue(EXE)
     cases = [make_case(rng, n, source, entries) for n in range(int(options["--cases"]))]
+    mesh_rng = random.Random(int(options["--seed"]) + 1000)
+    cases += [make_mesh_case(mesh_rng, source) for n in range(int(options["--mesh-cases"]))]
     failures = {k: [] for k in ["crash", "hang", "exit code", "error line",
-                                "files after an error", "output"]}
+                                "files after an error", "output", "bad mesh accepted",
+                                "good mesh refused"]}
     with concurrent.futures.ThreadPoolExecutor(int(options["--jobs"])) as pool:
         for number, failure, command, detail in pool.map(lambda c: run_case(c[0], *c[1]),
                                                          enumerate(cases)):
             if failure:
                 failures[failure].append((number, command, detail))
-    print("cases: %d (seed %s)" % (len(cases), options["--seed"]))
+    print("cases: %d (seed %s), of them mesh cases: %s" % (len(cases), options["--seed"],
+                                                           options["--mesh-cases"]))
     for kind, found in failures.items():
         print("%s: %d" % (kind, len(found)))
     for kind, found in failures.items():

@@ -22,6 +22,12 @@ namespace FoslsContact
    * which the Raviart-Thomas level transfer needs, and turns cells of
    * negative measure around.
    *
+   * GridIn trusts the nodes and cells of the file: MeshCheck reads them
+   * before it does (indices, counts, coordinates, cells twice, hanging
+   * nodes, overlaps). A UTF-8 byte order mark and CRLF (or CR) line ends
+   * are made plain first: GridIn's VTK reader compares its header lines
+   * whole.
+   *
    * What GridIn cannot say in terms of the file is checked here, so that
    * every problem is one line that names the file: a file that cannot be
    * read (with the reason), an unknown extension, a binary or unknown Gmsh

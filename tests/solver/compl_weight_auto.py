@@ -10,10 +10,11 @@
 #  - The user's punch (prm/punch.prm, a Gmsh mesh of 256 unstructured quads,
 #    mm/N/MPa), 3 levels, checked on level 2: auto takes half the limit of
 #    level 2 (bracket [0.0618, 0.0638]), below the cap, and the run
-#    converges; its force agrees to 1e-3 with C_compl = 0.03 given (the
-#    weight the user bisected by hand). C_compl = 0.1 is refused, naming the
-#    largest accepted value X (the limit less the 50% margin of a check on a
-#    coarser level): 0.99 X is accepted, 1.01 X refused.
+#    converges; its force agrees to 1e-3 with C_compl = 0.03 given (a
+#    weight below the limit, which a user's scene may set). C_compl = 0.1
+#    is refused, naming the largest accepted value X (the limit less the
+#    50% margin of a check on a coarser level): 0.99 X is accepted, 1.01 X
+#    refused.
 #  - used_parameters.prm of the auto run holds the weight taken, and runs
 #    the same functional again (J to 1e-12).
 #  - Data are parsed where the scene uses them: a 3D scene without Neumann

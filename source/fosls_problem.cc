@@ -313,7 +313,9 @@ namespace FoslsContact
       ", \"C_compl_limit\": " + json_number(compl_limit) + "}";
     Postprocessor<dim>   post(*discretization, parameters);
     const LevelVector    cartesian = post.solution_in_scene_units(solution);
-    const Tensor<1, dim> force     = post.contact_force(cartesian);
+    // (the resultant of sigma n on every boundary id, once per step)
+    const auto           forces    = post.boundary_forces(cartesian);
+    const Tensor<1, dim> force     = post.contact_force(forces);
     indicators = std::make_unique<ErrorIndicators<dim>>(*discretization, parameters.weights);
     indicators->compute(solution);
     run_summary.add_solver(summary);
@@ -355,7 +357,7 @@ namespace FoslsContact
           << ", compl " << J.complementarity << ")" << std::defaultfloat
           << std::endl;
     run_summary.note_functional_round_off(J.total, row.functional_start, *indicators);
-    run_summary.add_forces(summary, post, cartesian, force);
+    run_summary.add_forces(summary, forces, force);
     row.reference = reference_solved;
     if (parameters.adaptivity.reference_refinements > 0)
       {

@@ -147,13 +147,12 @@ namespace FoslsContact
 
   template <int dim>
   Tensor<1, dim>
-  Postprocessor<dim>::contact_force(const LevelVector &solution) const
+  Postprocessor<dim>::contact_force(
+    const std::map<types::boundary_id, Tensor<1, dim>> &forces) const
   {
     const auto &   scene = discretization.get_scene();
     Tensor<1, dim> force;
-    if (!scene.has_contact())
-      return force;
-    for (const auto &[id, part] : boundary_forces(solution))
+    for (const auto &[id, part] : forces)
       if (scene.is_contact(id))
         force += part;
     return force;

@@ -302,15 +302,13 @@ namespace FoslsContact
 
   template <int dim>
   void
-  RunSummary<dim>::add_forces(Summary &                 summary,
-                              const Postprocessor<dim> &post,
-                              const LevelVector &       cartesian,
-                              const Tensor<1, dim> &    force) const
+  RunSummary<dim>::add_forces(Summary &                                           summary,
+                              const std::map<types::boundary_id, Tensor<1, dim>> &forces,
+                              const Tensor<1, dim> &                              force) const
   {
     const Parameters::UnitNames &units      = parameters.scaling.unit_names;
     const std::string            force_unit = units.reported_force(dim);
     const auto                   precision  = pcout.get_stream().precision();
-    const auto                   forces     = post.boundary_forces(cartesian); // (collective)
     double                       largest    = 0;
     Tensor<1, dim>               sum;
     for (const auto &[id, f] : forces)

@@ -76,11 +76,9 @@ namespace FoslsContact
     std::map<types::boundary_id, Tensor<1, dim>>
     boundary_forces(const LevelVector &solution) const;
 
-    /**
-     * Total contact force: the boundary_forces() of the contact ids, added
-     * (collective).
-     */
-    Tensor<1, dim> contact_force(const LevelVector &solution) const;
+    /** Total contact force: the @p forces (boundary_forces()) of the contact ids, added. */
+    Tensor<1, dim>
+    contact_force(const std::map<types::boundary_id, Tensor<1, dim>> &forces) const;
 
     /**
      * Error norms of the solution_in_scene_units() against Data/Exact

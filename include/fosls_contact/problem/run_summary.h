@@ -102,16 +102,15 @@ namespace FoslsContact
     /**
      * The answers in an engineer's terms, on the screen with the units of
      * Scaling/Unit names and in summary.json: the contact force @p force
-     * (the line "Contact force = ..."), the resultant of sigma n on every
+     * (the line "Contact force = ..."), @p forces, the resultant of sigma n on every
      * boundary id (Postprocessor::boundary_forces(): the force exerted on the
      * body there, a Dirichlet id's reaction) and their sum, the equilibrium
      * check; for a scene with contact the contact zone (ContactZone: width or
      * area, mean and peak pressure). Collective.
      */
-    void add_forces(Summary &                 summary,
-                    const Postprocessor<dim> &post,
-                    const LevelVector &       cartesian,
-                    const Tensor<1, dim> &    force) const;
+    void add_forces(Summary &                                           summary,
+                    const std::map<types::boundary_id, Tensor<1, dim>> &forces,
+                    const Tensor<1, dim> &                              force) const;
     /**
      * The comparison with Hertz's contact pressure, for a scene that
      * declares one; returns the relative errors of the pressure: l2 at

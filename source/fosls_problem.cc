@@ -253,6 +253,9 @@ namespace FoslsContact
           << monitor->iterations() << " iterations"
           << (monitor->stopped_at_round_off() ?
                 " (corrections at their round-off floor)" :
+              monitor->stop_reason() == "discretization accuracy" ?
+                " (Stopping criterion = discretization accuracy: the algebraic error estimate "
+                "below Discretization fraction times sqrt(J))" :
                 "");
     if (monitor->stop_reason() == "diverged")
       pcout << ": J increased";
@@ -323,7 +326,9 @@ namespace FoslsContact
     if (parameters.solver.cross_check)
       summary["cross_check"] = "{\"functional\": " + json_number(cross_check_functional) +
                                ", \"solution\": " + json_number(cross_check_solution) + "}";
-    const FunctionalValue J = run_summary.add_solution(summary, post, cartesian, force, *indicators);
+    const FieldMaxima     maxima = post.field_maxima(cartesian);
+    const FunctionalValue J =
+      run_summary.add_solution(summary, post, cartesian, force, *indicators, maxima);
 
     AdaptiveSteps::Step row;
     row.cells      = discretization->get_triangulation().n_global_active_cells();
@@ -336,6 +341,10 @@ namespace FoslsContact
     row.time_cross_check_s     = time_cross_check;
     row.energy_increases = monitor->energy_increases();
     row.functional       = J.total;
+    row.functional_dimensionless = J.total / scene.scaling().functional(dim);
+    row.max_von_mises            = maxima.von_mises;
+    row.von_mises_position       = maxima.von_mises_position;
+    row.von_mises_cell_diameter  = maxima.von_mises_cell_diameter;
     row.functional_start = monitor->get_history().front().functional.total *
                            scene.scaling().functional(dim);
     for (unsigned int d = 0; d < dim; ++d)
@@ -357,6 +366,8 @@ namespace FoslsContact
           << ", compl " << J.complementarity << ")" << std::defaultfloat
           << std::endl;
     run_summary.note_functional_round_off(J.total, row.functional_start, *indicators);
+    row.relative_error_estimate =
+      run_summary.add_error_estimate(summary, post, cartesian, *indicators);
     run_summary.add_forces(summary, forces, force);
     row.reference = reference_solved;
     if (parameters.adaptivity.reference_refinements > 0)
@@ -368,7 +379,10 @@ namespace FoslsContact
             for (unsigned int s = 0; s < step_solutions.size(); ++s)
               {
                 const ErrorNorms e = post.difference(cartesian, step_solutions[s]);
-                steps.set_reference_errors(s, e.u_h1(), e.sigma_hdiv());
+                steps.set_reference_errors(s,
+                                           e.u_h1(),
+                                           e.sigma_hdiv(),
+                                           e.scaled(scene.scaling(), dim));
                 pcout << "Step " << s << " against the reference: |u_ref - u_h|_H1 = "
                       << std::scientific << std::setprecision(4) << e.u_h1()
                       << ", |sigma_ref - sigma_h|_Hdiv = " << e.sigma_hdiv()
@@ -380,6 +394,15 @@ namespace FoslsContact
       }
     const std::string table = post.write_step(solution, *indicators, step, output);
     steps.add(row);
+    // (said once, and kept in summary.json from the step it was found on)
+    std::string singular;
+    if (singular_stress.empty() && steps.singular_stress(parameters.scaling.unit_names.stress, singular))
+      {
+        singular_stress = singular;
+        pcout << "Warning: " << singular_stress << std::endl;
+      }
+    if (!singular_stress.empty())
+      summary["singular_stress"] = "\"" + singular_stress + "\"";
     if (parameters.adaptivity.enabled())
       finished = FinishedStep{table, monitor->csv(), summary};
   }

@@ -197,6 +197,11 @@ namespace FoslsContact
      * definiteness check (NaN: not computed, or C_compl given).
      */
     double compl_limit = std::numeric_limits<double>::quiet_NaN();
+    /**
+     * AdaptiveSteps::singular_stress()'s text once an adaptive run has
+     * found a singular stress ("" before).
+     */
+    std::string singular_stress;
     /** The uniform levels the definiteness check passed (ProblemChecks). */
     std::set<unsigned int>               definite_levels;
     double                               time_setup = 0, time_solve = 0;

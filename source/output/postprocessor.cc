@@ -289,11 +289,12 @@ namespace FoslsContact
   Postprocessor<dim>::field_maxima(const LevelVector &solution) const
   {
     // (at the cells' corners, cell by cell in parallel: a maximum does not
-    // depend on the order of the cells)
+    // depend on the order of the cells; the copier sees the cells in their
+    // order, so the first of equal maxima is the position taken)
     struct Scratch
     {
       Scratch(const Mapping<dim> &mapping, const FiniteElement<dim> &fe)
-        : fe_values(mapping, fe, QTrapezoid<dim>(), update_values)
+        : fe_values(mapping, fe, QTrapezoid<dim>(), update_values | update_quadrature_points)
         , u(fe_values.n_quadrature_points)
         , row(fe_values.n_quadrature_points)
         , sigma(fe_values.n_quadrature_points)
@@ -305,11 +306,17 @@ namespace FoslsContact
       std::vector<Tensor<1, dim>> u, row;
       std::vector<Tensor<2, dim>> sigma;
     };
+    struct CellMaxima
+    {
+      FieldMaxima maxima;
+      Point<dim>  position;
+      double      diameter = 0;
+    };
     const FEValuesExtractors::Vector displacement(0);
     const double                     nu = parameters.material.poisson_ratio;
-    FieldMaxima                      maxima;
-    const auto worker = [&](const auto &cell, Scratch &scratch, FieldMaxima &cell_maxima) {
-      cell_maxima = FieldMaxima();
+    CellMaxima                       here;
+    const auto worker = [&](const auto &cell, Scratch &scratch, CellMaxima &cell_maxima) {
+      cell_maxima = CellMaxima();
       if (!cell->is_locally_owned())
         return;
       auto &fe_values = scratch.fe_values;
@@ -324,14 +331,26 @@ namespace FoslsContact
         }
       for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
         {
-          cell_maxima.displacement = std::max(cell_maxima.displacement, scratch.u[q].norm());
-          cell_maxima.von_mises =
-            std::max(cell_maxima.von_mises, StressMeasures::von_mises(scratch.sigma[q], nu));
+          FieldMaxima &m = cell_maxima.maxima;
+          m.displacement = std::max(m.displacement, scratch.u[q].norm());
+          const double von_mises = StressMeasures::von_mises(scratch.sigma[q], nu);
+          if (von_mises > m.von_mises)
+            {
+              m.von_mises            = von_mises;
+              cell_maxima.position   = fe_values.quadrature_point(q);
+              cell_maxima.diameter   = cell->diameter(mapping);
+            }
         }
     };
-    const auto copier = [&](const FieldMaxima &cell_maxima) {
-      maxima.displacement = std::max(maxima.displacement, cell_maxima.displacement);
-      maxima.von_mises    = std::max(maxima.von_mises, cell_maxima.von_mises);
+    const auto copier = [&](const CellMaxima &cell_maxima) {
+      here.maxima.displacement =
+        std::max(here.maxima.displacement, cell_maxima.maxima.displacement);
+      if (cell_maxima.maxima.von_mises > here.maxima.von_mises)
+        {
+          here.maxima.von_mises = cell_maxima.maxima.von_mises;
+          here.position         = cell_maxima.position;
+          here.diameter         = cell_maxima.diameter;
+        }
     };
     const auto &dof_handler = discretization.get_dof_handler();
     WorkStream::run(dof_handler.begin_active(),
@@ -339,10 +358,20 @@ namespace FoslsContact
                     worker,
                     copier,
                     Scratch(mapping, discretization.get_fe()),
-                    FieldMaxima());
+                    CellMaxima());
     const MPI_Comm comm = discretization.get_communicator();
-    maxima.displacement = Utilities::MPI::max(maxima.displacement, comm);
-    maxima.von_mises    = Utilities::MPI::max(maxima.von_mises, comm);
+    FieldMaxima    maxima;
+    maxima.displacement = Utilities::MPI::max(here.maxima.displacement, comm);
+    // the position from the process with the largest value (the lowest
+    // rank of equal ones)
+    const auto von_mises = Utilities::MPI::min_max_avg(here.maxima.von_mises, comm);
+    maxima.von_mises     = von_mises.max;
+    std::vector<double> where(here.position.begin_raw(), here.position.end_raw());
+    where.push_back(here.diameter);
+    where = Utilities::MPI::broadcast(comm, where, von_mises.max_index);
+    maxima.von_mises_cell_diameter = where.back();
+    where.pop_back();
+    maxima.von_mises_position = where;
     return maxima;
   }
 

@@ -253,7 +253,8 @@ namespace FoslsContact
                                   const Postprocessor<dim> & post,
                                   const LevelVector &        cartesian,
                                   const Tensor<1, dim> &     force,
-                                  const ErrorIndicators<dim> &indicators) const
+                                  const ErrorIndicators<dim> &indicators,
+                                  const FieldMaxima &         maxima) const
   {
     // J in the scene's units (Scaling::functional())
     const FunctionalValue J_hat  = qp.parts(solution);
@@ -293,10 +294,42 @@ namespace FoslsContact
       ", \"max\": " + number(std::sqrt(J_unit * indicators.max_squared())) +
       ", \"cells\": " + std::to_string(discretization.get_triangulation().n_global_active_cells()) +
       ", \"cells_for_half_of_J\": " + std::to_string(indicators.cells_for_half()) + "}";
-    const FieldMaxima maxima    = post.field_maxima(cartesian);
     summary["max_displacement"] = number(maxima.displacement);
     summary["max_von_mises"]    = number(maxima.von_mises);
+    std::vector<std::string> where;
+    for (const double x : maxima.von_mises_position)
+      where.push_back(number(x));
+    summary["max_von_mises_position"] = json_array(where);
     return J;
+  }
+
+
+  template <int dim>
+  double
+  RunSummary<dim>::add_error_estimate(Summary &                   summary,
+                                      const Postprocessor<dim> &  post,
+                                      const LevelVector &         cartesian,
+                                      const ErrorIndicators<dim> &indicators) const
+  {
+    // J^ bounds |x - x_h|^2 from above and below in the norm of
+    // H1 x H(div) of the dimensionless problem (paper section 1), whose
+    // constants are of order 1 for the weights' defaults: sqrt(J^) over
+    // the solution's own norm there is the relative error, within those
+    // constants, in every unit system alike. (The sum of the cellwise
+    // parts: the accurate value of J^, section 9 of doc/method.md.)
+    LevelVector zero(cartesian);
+    zero               = 0.;
+    const double norm  = post.difference(cartesian, zero).scaled(scene.scaling(), dim);
+    const double J_hat = std::max(indicators.total(), 0.);
+    const double relative =
+      norm > 0 ? std::sqrt(J_hat) / norm : std::numeric_limits<double>::infinity();
+    summary["relative_error_estimate"] = number(relative);
+    pcout << "Relative error estimate: sqrt(J)/|x| = " << std::scientific << std::setprecision(2)
+          << relative << std::defaultfloat
+          << " (in the H1 x H(div) norm of the scaled problem, in which J bounds the error "
+             "from above and below)"
+          << std::endl;
+    return relative;
   }
 
 

@@ -160,9 +160,13 @@ class Runner:
         self.exe, self.source = argv[1], argv[2]
         self.count = 0
 
-    def run(self, prm, settings=(), name=None, processes=1, timeout=None):
+    def run(self, prm, settings=(), name=None, processes=1, timeout=None,
+            stop="tolerance"):
         """Run @p prm (relative to the source directory) with the
-        "Section/Name=value" strings @p settings, on @p processes MPI
+        "Section/Name=value" strings @p settings and Solver/Stopping
+        criterion = @p stop (None: the program's default; the tests compare
+        solvers converged to Solver/Tolerance, and solver/default_stop the
+        default stop with that), on @p processes MPI
         processes (mpirun from $MPIRUN, more processes than cores allowed);
         the output goes to ./run_NN_<name>, without vtu files. A run that
         takes longer than @p timeout seconds (a hang, e.g. a deadlock
@@ -170,9 +174,13 @@ class Runner:
         returncode is then None."""
         self.count += 1
         directory = "run_%02d" % self.count + ("_" + name if name else "")
+        stopping = [] if stop is None or any(
+            s.startswith("Solver/Stopping criterion") for s in settings) else [
+            "Solver/Stopping criterion=" + stop]
         command = command_line(self.exe, os.path.join(self.source, prm),
                                ["Output/Directory=" + directory,
-                                "Output/Write vtu=false"] + list(settings), processes)
+                                "Output/Write vtu=false"] + stopping + list(settings),
+                               processes)
         with open(directory + ".cmd", "w") as f:
             f.write(" ".join("'%s'" % c if " " in c or ";" in c else c
                              for c in command) + "\n")

@@ -8,9 +8,11 @@
 #include <fosls_contact/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/scene/physical_mapping.h>
+#include <fosls_contact/scene/scaling.h>
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace FoslsContact
 {
@@ -23,6 +25,21 @@ namespace FoslsContact
     {
       return std::sqrt(sigma_l2 * sigma_l2 + sigma_div * sigma_div);
     }
+    /**
+     * sqrt(|u|_H1^2 + |sigma|_Hdiv^2) of the dimensionless problem (u/L
+     * and sigma/S on the domain x/L, doc/method.md section 1) for norms
+     * computed in the scene's units: the norm in which the least-squares
+     * functional J^ bounds the error from above and below, and the same
+     * number in every unit system, so that sqrt(J^) over it is a relative
+     * error and an efficiency index is dimensionless.
+     */
+    double scaled(const Scaling &scaling, const unsigned int dim) const
+    {
+      const double L = scaling.length, S = scaling.stress;
+      return std::sqrt((u_l2 * u_l2 / (L * L) + u_h1_semi * u_h1_semi +
+                        (sigma_l2 * sigma_l2 + sigma_div * sigma_div * L * L) / (S * S)) /
+                       std::pow(L, double(dim)));
+    }
   };
 
   /** Extremes of the fields, in the scene's units. */
@@ -30,6 +47,13 @@ namespace FoslsContact
   {
     double displacement = 0; ///< max |u|
     double von_mises    = 0; ///< max of the von Mises stress (StressMeasures)
+    /**
+     * Where the von Mises stress takes its maximum (x, y[, z]; the first
+     * such cell corner) and the diameter of the cell there (the mesh size
+     * at that point).
+     */
+    std::vector<double> von_mises_position;
+    double              von_mises_cell_diameter = 0;
   };
 
   /**

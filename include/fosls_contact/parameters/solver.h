@@ -79,8 +79,11 @@ namespace FoslsContact
         matrix,
       };
 
+      /** The default of Tolerance ("auto" stopping takes another value as a wish). */
+      static constexpr double default_tolerance = 1e-8;
+
       Type         type                = Type::monotone_multigrid;
-      double       tolerance           = 1e-8;
+      double       tolerance           = default_tolerance;
       unsigned int max_iterations      = 200;
       Stopping     stopping            = Stopping::tolerance;
       double       discretization_fraction = 0.1;

@@ -66,8 +66,28 @@ namespace FoslsContact
       double reference_error_u_h1          = std::numeric_limits<double>::quiet_NaN();
       double reference_error_sigma_hdiv    = std::numeric_limits<double>::quiet_NaN();
       /**
-       * sqrt(J) / sqrt(|u_ref - u_h|_H1^2 + |sigma_ref - sigma_h|_Hdiv^2)
-       * (NaN without a reference).
+       * The same error in the norm of the dimensionless problem
+       * (ErrorNorms::scaled()), NaN without a reference.
+       */
+      double reference_error_scaled = std::numeric_limits<double>::quiet_NaN();
+      /** J of the dimensionless problem, J / L^dim. */
+      double functional_dimensionless = 0;
+      /**
+       * sqrt(J) over the solution's norm, both of the dimensionless
+       * problem (RunSummary::add_error_estimate()).
+       */
+      double relative_error_estimate = std::numeric_limits<double>::quiet_NaN();
+      /**
+       * The largest von Mises stress, where it is and the diameter of
+       * the cell there (Postprocessor::field_maxima()).
+       */
+      double              max_von_mises = 0;
+      std::vector<double> von_mises_position;
+      double              von_mises_cell_diameter = 0;
+      /**
+       * sqrt(J^) / (the error against the reference in the norm of the
+       * dimensionless problem): dimensionless, the same in every unit
+       * system (NaN without a reference).
        */
       double efficiency_index() const;
     };
@@ -86,12 +106,29 @@ namespace FoslsContact
     unsigned int size() const { return steps.size(); }
     const Step & back() const { return steps.back(); }
     const Step & at(const unsigned int s) const { return steps.at(s); }
-    /** The errors of step @p s against the reference (the last row). */
-    void set_reference_errors(const unsigned int s, const double u_h1, const double sigma_hdiv)
+    /**
+     * The errors of step @p s against the reference (the last row), in
+     * the scene's units and (@p scaled) in the norm of the dimensionless
+     * problem.
+     */
+    void set_reference_errors(const unsigned int s,
+                              const double       u_h1,
+                              const double       sigma_hdiv,
+                              const double       scaled)
     {
       steps[s].reference_error_u_h1       = u_h1;
       steps[s].reference_error_sigma_hdiv = sigma_hdiv;
+      steps[s].reference_error_scaled     = scaled;
     }
+
+    /**
+     * Whether the largest von Mises stress grew under the last two
+     * refinements at one point, where @p text then says it: the stress is
+     * singular there (a re-entrant corner, the edge of a bonded punch,
+     * where the boundary conditions change), and its peak value is the
+     * mesh's, not the body's (in @p stress_unit, Scaling/Unit names).
+     */
+    bool singular_stress(const std::string &stress_unit, std::string &text) const;
 
     /**
      * Whether the adaptive loop goes on after the last step: not without

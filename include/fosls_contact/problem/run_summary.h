@@ -92,13 +92,25 @@ namespace FoslsContact
     /**
      * The solution's figures in the scene's units: J and its parts, the
      * contact force, the error indicators, the largest displacement and
-     * stress; returns J.
+     * stress (@p maxima: Postprocessor::field_maxima()); returns J.
      */
     FunctionalValue add_solution(Summary &                   summary,
                                  const Postprocessor<dim> &  post,
                                  const LevelVector &         cartesian,
                                  const Tensor<1, dim> &      force,
-                                 const ErrorIndicators<dim> &indicators) const;
+                                 const ErrorIndicators<dim> &indicators,
+                                 const FieldMaxima &         maxima) const;
+    /**
+     * The error estimate in the user's terms: sqrt(J) of the
+     * dimensionless problem over the H1 x H(div) norm of the solution
+     * there (ErrorNorms::scaled()), the relative error within the
+     * constants of the functional's norm equivalence. Printed and written
+     * to summary.json (relative_error_estimate); returns it. Collective.
+     */
+    double add_error_estimate(Summary &                   summary,
+                              const Postprocessor<dim> &  post,
+                              const LevelVector &         cartesian,
+                              const ErrorIndicators<dim> &indicators) const;
     /**
      * The answers in an engineer's terms, on the screen with the units of
      * Scaling/Unit names and in summary.json: the contact force @p force

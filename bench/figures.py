@@ -132,7 +132,7 @@ def hertz_like(plt, collections, name, prm, settings, zoom, unit_length, unit_st
     rows.sort(key=lambda r: float(r["x"]))
     x = [float(r["x"]) - cx for r in rows]
     p = [-float(r["sigma_nn"]) for r in rows]
-    act = [float(r["active"]) > 0.5 for r in rows]
+    act = [float(r["in_contact"]) > 0.5 for r in rows]
     bx.plot(x, p, "-", color="tab:blue", lw=1, label="computed -sigma_nn")
     bx.plot([a for a, b in zip(x, act) if b], [a for a, b in zip(p, act) if b], "o",
             mfc="none", color="tab:blue", ms=4, label="vertices in contact")
@@ -226,7 +226,7 @@ def adaptive(plt, collections):
                    "at the contact zone: Hertz's half-width a = %.4g (dashed),\n"
                    "vertices in contact (dots); pressure L2 error %.4f"
                    % (hertz["a"], hertz["pressure_error_boundary"]))
-    rows = [r for r in contact_rows(out) if float(r["active"]) > 0.5]
+    rows = [r for r in contact_rows(out) if float(r["in_contact"]) > 0.5]
     bx.plot([float(r["x"]) for r in rows], [float(r["y"]) for r in rows], "o", color="tab:red",
             ms=2.5)
     for x in (cx - hertz["a"], cx + hertz["a"]):

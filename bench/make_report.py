@@ -207,10 +207,10 @@ for ax, lam in zip(axes, ["1", "inf"]):
     c.sort(key=lambda z: z["x"])
     xs = [z["x"] for z in c]
     ps = [-z["sigma_nn"] for z in c]
-    act = [z for z in c if z["active"] > 0.5]
+    act = [z for z in c if z["in_contact"] > 0.5]
     half = max(abs(z["x"]) for z in act) if act else float("nan")
     # first inactive vertex beyond the active zone, on each side: the zone ends in between
-    inact = [abs(z["x"]) for z in c if z["active"] <= 0.5 and abs(z["x"]) > half]
+    inact = [abs(z["x"]) for z in c if z["in_contact"] <= 0.5 and abs(z["x"]) > half]
     nxt = min(inact) if inact else float("nan")
     peak = max(ps)
     xpk = xs[ps.index(peak)]
@@ -290,8 +290,8 @@ for L in [3, 4, 5]:
     p0 = 3 * F / (2 * math.pi * a * a)
     c = read_csv(os.path.join(RES, r["case"], "contact.csv"))
     rad = [(math.hypot(z["x"], z["y"]), z) for z in c]
-    r_act = max((q for q, z in rad if z["active"] > 0.5), default=float("nan"))
-    r_in = min((q for q, z in rad if z["active"] <= 0.5), default=float("nan"))
+    r_act = max((q for q, z in rad if z["in_contact"] > 0.5), default=float("nan"))
+    r_in = min((q for q, z in rad if z["in_contact"] <= 0.5), default=float("nan"))
     peak = max(-z["sigma_nn"] for z in c)
     num = sum((-z["sigma_nn"] - p0 * math.sqrt(max(0.0, 1 - q * q / (a * a)))) ** 2
               for q, z in rad)

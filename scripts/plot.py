@@ -92,7 +92,7 @@ def plot_pressure(plt, summary, contact, out):
                                             for d in range(dim))) for r in contact]
             label = "distance from the contact point" + unit_label(summary, "length")
         pressure = [-float(r["sigma_nn"]) for r in contact]
-        active = [r["active"].strip() == "1" for r in contact]
+        active = [r["in_contact"].strip() == "1" for r in contact]
         order = sorted(range(len(contact)), key=lambda i: coordinate[i])
         if dim == 2:
             ax.plot([coordinate[i] for i in order], [pressure[i] for i in order],

@@ -1,5 +1,7 @@
 #include <fosls_contact/output/contact_surface.h>
 
+#include <limits>
+
 namespace FoslsContact
 {
   template <int dim>
@@ -41,8 +43,11 @@ namespace FoslsContact
 
 
   template <int dim>
-  ContactSurface<dim>::Fields::Fields(const Scene<dim> &scene)
+  ContactSurface<dim>::Fields::Fields(
+    const Scene<dim> &                                              scene,
+    const std::map<unsigned int, typename ContactRow<dim>::Values> &rows)
     : scene(scene)
+    , rows(rows)
   {}
 
 
@@ -50,7 +55,12 @@ namespace FoslsContact
   std::vector<std::string>
   ContactSurface<dim>::Fields::get_names() const
   {
-    return {"contact_pressure", "normal_displacement", "gap"};
+    return {"contact_pressure",
+            "normal_displacement",
+            "gap",
+            "remaining_gap",
+            "in_contact",
+            "face_pressure"};
   }
 
 
@@ -68,10 +78,14 @@ namespace FoslsContact
     const DataPostprocessorInputs::Vector<dim> &inputs,
     std::vector<Vector<double>> &               computed) const
   {
-    const double L = scene.scaling().length;
+    using Row          = ContactRow<dim>;
+    const double L     = scene.scaling().length;
+    const auto   cell  = inputs.template get_cell<dim>();
+    const auto   face  = cell->face(inputs.get_face_number());
     for (unsigned int q = 0; q < computed.size(); ++q)
       {
-        // the scene's functions are dimensionless at dimensionless points
+        // the face's own pressure at the point: RT0's normal traction,
+        // constant on the face
         const Point<dim>     x_hat = inputs.evaluation_points[q] / L;
         const Tensor<1, dim> n_o   = scene.obstacle_normal(x_hat);
         Tensor<1, dim>       u, traction;
@@ -81,9 +95,41 @@ namespace FoslsContact
             for (unsigned int k = 0; k < dim; ++k)
               traction[m] += inputs.solution_values[q][dim + m * dim + k] * inputs.normals[q][k];
           }
-        computed[q][0] = -(traction * n_o);
-        computed[q][1] = u * n_o;
-        computed[q][2] = L * scene.gap().value(x_hat) - u * n_o;
+        computed[q][5] = -(traction * n_o);
+        // the rest: contact.csv's row of the face's vertex at this point
+        // (the patches have no subdivisions: the points are the face's
+        // vertices, in the scene's coordinates, L times the mesh's)
+        unsigned int nearest  = 0;
+        double       distance = std::numeric_limits<double>::max();
+        for (const unsigned int v : face->vertex_indices())
+          if (const double d = inputs.evaluation_points[q].distance(L * face->vertex(v));
+              d < distance)
+            {
+              distance = d;
+              nearest  = v;
+            }
+        const auto row = rows.find(face->vertex_index(nearest));
+        if (row != rows.end())
+          {
+            const auto &r  = row->second;
+            computed[q][0] = -r[Row::sigma_nn];
+            computed[q][1] = r[Row::u_n];
+            computed[q][2] = r[Row::gap];
+            computed[q][3] = r[Row::remaining_gap];
+            computed[q][4] = r[Row::in_contact];
+          }
+        else
+          {
+            // a vertex of a contact face that is no contact vertex (it is
+            // also on a Dirichlet boundary, which takes precedence): the
+            // face's own values there
+            const double gap = L * scene.gap().value(x_hat);
+            computed[q][0]   = computed[q][5];
+            computed[q][1]   = u * n_o;
+            computed[q][2]   = gap;
+            computed[q][3]   = gap - u * n_o;
+            computed[q][4]   = 0;
+          }
       }
   }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -25,8 +26,8 @@ namespace FoslsContact
 
 
   template <int dim>
-  std::vector<typename ContactRow<dim>::Values>
-  ContactTable<dim>::rows(const LevelVector &x) const
+  std::map<unsigned int, typename ContactRow<dim>::Values>
+  ContactTable<dim>::local_rows(const LevelVector &x) const
   {
     using Row           = ContactRow<dim>;
     const Scaling &scaling = discretization.get_scene().scaling();
@@ -38,7 +39,7 @@ namespace FoslsContact
     // sigma_nn at a vertex: mean over the contact faces that contain it
     // (all of them are here for an owned vertex; a ghost face's entry is
     // read through LocalElements)
-    const LocalElements                                     x_local(x);
+    const LocalElements                                     x_local(x), cartesian_local(cartesian);
     std::map<unsigned int, std::pair<double, unsigned int>> face_mean;
     std::map<unsigned int, double>                          share;
     level.for_each_cell(discretization.get_dof_handler(), [&](const auto &cell) {
@@ -59,28 +60,46 @@ namespace FoslsContact
                 }
             }
     });
-    std::vector<typename Row::Values> rows;
+    std::map<unsigned int, typename Row::Values> rows;
     for (const auto &cv : level.contact_vertices)
-      if (cv.owned)
-        {
-          const double un = x.local_element(cv.normal_dof);
+      {
+          const double un = x_local(cv.normal_dof);
           const auto   it = face_mean.find(cv.vertex_index);
           const double snn =
             it == face_mean.end() ? 0. : it->second.first / it->second.second;
-          const auto &          dofs = level.vertex_dofs.at(cv.vertex_index);
           typename Row::Values row;
           for (unsigned int d = 0; d < dim; ++d)
             {
               row[Row::x + d] = scaling.length * cv.point[d];
-              row[Row::u + d] = scaling.length * cartesian.local_element(dofs[d]);
+              // (the Cartesian displacement of the owned vertices, those
+              // of contact.csv; the rotation need not reach ghost entries)
+              row[Row::u + d] = cv.owned ? scaling.length *
+                                             cartesian_local(level.vertex_dofs.at(
+                                               cv.vertex_index)[d]) :
+                                           std::numeric_limits<double>::quiet_NaN();
             }
           row[Row::u_n]      = scaling.length * un;
-          row[Row::gap]      = scaling.length * cv.gap;
-          row[Row::sigma_nn] = scaling.stress * snn;
-          row[Row::active]   = in_contact(un, cv.gap) ? 1 : 0;
-          row[Row::share]    = std::pow(scaling.length, dim - 1) * share[cv.vertex_index];
-          rows.push_back(row);
+          row[Row::gap]           = scaling.length * cv.gap;
+          row[Row::remaining_gap] = scaling.length * (cv.gap - un);
+          row[Row::sigma_nn]      = scaling.stress * snn;
+          row[Row::in_contact]    = in_contact(un, cv.gap) ? 1 : 0;
+          row[Row::share]         = std::pow(scaling.length, dim - 1) * share[cv.vertex_index];
+          rows[cv.vertex_index]   = row;
         }
+    return rows;
+  }
+
+
+  template <int dim>
+  std::vector<typename ContactRow<dim>::Values>
+  ContactTable<dim>::rows(const LevelVector &x) const
+  {
+    const auto &level = discretization.level(discretization.finest_level());
+    const auto  local = local_rows(x);
+    std::vector<typename ContactRow<dim>::Values> rows;
+    for (const auto &cv : level.contact_vertices)
+      if (cv.owned)
+        rows.push_back(local.at(cv.vertex_index));
     const auto all = Utilities::MPI::gather(discretization.get_communicator(), rows, 0);
     rows.clear();
     for (const auto &part : all)
@@ -101,13 +120,13 @@ namespace FoslsContact
     if (Utilities::MPI::this_mpi_process(discretization.get_communicator()) != 0)
       return out.str();
     out << (dim == 2 ? "x,y,u_x,u_y" : "x,y,z,u_x,u_y,u_z")
-        << ",u_n,gap,sigma_nn,boundary_share,active\n";
+        << ",u_n,gap,remaining_gap,sigma_nn,boundary_share,in_contact\n";
     out << std::setprecision(10);
     for (const auto &row : rows)
       {
-        for (unsigned int d = 0; d < ContactRow<dim>::active; ++d)
+        for (unsigned int d = 0; d < ContactRow<dim>::in_contact; ++d)
           out << row[d] << ',';
-        out << int(row[ContactRow<dim>::active]) << '\n';
+        out << int(row[ContactRow<dim>::in_contact]) << '\n';
       }
     return out.str();
   }

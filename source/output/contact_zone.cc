@@ -11,7 +11,7 @@ namespace FoslsContact
     for (const auto &row : rows)
       {
         const double pressure = -row[Row::sigma_nn];
-        if (row[Row::active] == 1)
+        if (row[Row::in_contact] == 1)
           {
             zone_measure += row[Row::share];
             integral += row[Row::share] * pressure;

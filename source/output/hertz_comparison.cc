@@ -80,7 +80,7 @@ namespace FoslsContact
         for (unsigned int d = 0; d < dim; ++d)
           p[d] = row[d];
         const double r = distance(p), p_h = -row[ContactRow<dim>::sigma_nn];
-        if (row[ContactRow<dim>::active] == 1)
+        if (row[ContactRow<dim>::in_contact] == 1)
           edge_inside = std::max(edge_inside, r);
         if (p_h > peak)
           {
@@ -98,7 +98,7 @@ namespace FoslsContact
         Tensor<1, dim> p;
         for (unsigned int d = 0; d < dim; ++d)
           p[d] = row[d];
-        if (row[ContactRow<dim>::active] == 0 && distance(p) > edge_inside)
+        if (row[ContactRow<dim>::in_contact] == 0 && distance(p) > edge_inside)
           edge_outside = std::min(edge_outside, distance(p));
       }
     pressure_error          = norm > 0 ? std::sqrt(difference / norm) : 0.;

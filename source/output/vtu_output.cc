@@ -139,12 +139,12 @@ namespace FoslsContact
 
     if (scene.has_contact())
       {
-        ContactSurface<dim>                 surface(scene);
-        typename ContactSurface<dim>::Fields fields(scene);
+        ContactSurface<dim> surface(scene);
+        const auto          rows = ContactTable<dim>(discretization).local_rows(x);
+        typename ContactSurface<dim>::Fields fields(scene, rows);
         surface.attach_dof_handler(discretization.get_dof_handler());
         surface.add_data_vector(solution, fields);
-        // (with the mapping of the computation: the gap g - u.n is that of
-        // the solution's own geometry, 0 where the body touches)
+        // (with the mapping of the computation)
         surface.build_patches(mapping);
         surface.set_flags(flags);
         write_pieces(surface,

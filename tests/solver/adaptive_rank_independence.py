@@ -90,7 +90,7 @@ def contact_rows(run, step):
     if not os.path.exists(path):
         return None
     with open(path) as f:
-        return [([float(row[k]) for k in ("x", "y", "z") if k in row], row["active"])
+        return [([float(row[k]) for k in ("x", "y", "z") if k in row], row["in_contact"])
                 for row in csv.DictReader(f)]
 
 

@@ -82,7 +82,7 @@ def check_zone(run, label):
     zone = run["contact_zone"] or {}
     with open(os.path.join(run.directory, "contact.csv")) as f:
         rows = list(csv.DictReader(f))
-    active = [r for r in rows if r["active"] == "1"]
+    active = [r for r in rows if r["in_contact"] == "1"]
     measure = sum(float(r["boundary_share"]) for r in active)
     mean = sum(float(r["boundary_share"]) * -float(r["sigma_nn"]) for r in active) / measure
     peak = max(-float(r["sigma_nn"]) for r in rows)

@@ -414,8 +414,8 @@ def check_hertz(run, label, shape, E, nu, radius, centre, normal, factor=1., axi
     def hertz(r):
         return p0 * math.sqrt(1. - r * r / (a * a)) if r < a else 0.
 
-    inside = max(r_of(x) for x in rows if x["active"] == "1")
-    outside = min(r_of(x) for x in rows if x["active"] == "0" and r_of(x) > inside)
+    inside = max(r_of(x) for x in rows if x["in_contact"] == "1")
+    outside = min(r_of(x) for x in rows if x["in_contact"] == "0" and r_of(x) > inside)
     peak = max(-float(x["sigma_nn"]) for x in rows)
     error = math.sqrt(sum((-float(x["sigma_nn"]) - hertz(r_of(x))) ** 2 for x in rows) /
                       sum(hertz(r_of(x)) ** 2 for x in rows))
@@ -454,7 +454,7 @@ def check_same(runs, label, tolerance, last_tolerance=None):
 def in_contact(run):
     """The number of contact vertices of @p run in contact (contact.csv)."""
     with open(os.path.join(run.directory, "contact.csv")) as f:
-        return sum(1 for row in csv.DictReader(f) if row["active"] == "1")
+        return sum(1 for row in csv.DictReader(f) if row["in_contact"] == "1")
 
 
 def check_shipped(run, label):

@@ -44,8 +44,8 @@ p0 = 3 * f[2] / (2 * math.pi * a * a)
 with open(os.path.join(run.directory, "contact.csv")) as table:
     rows = list(csv.DictReader(table))
 r_of = [(math.hypot(float(z["x"]), float(z["y"])), z) for z in rows]
-r_active = max(r for r, z in r_of if z["active"].strip() == "1")
-r_inactive = min(r for r, z in r_of if z["active"].strip() != "1")
+r_active = max(r for r, z in r_of if z["in_contact"].strip() == "1")
+r_inactive = min(r for r, z in r_of if z["in_contact"].strip() != "1")
 peak = max(-float(z["sigma_nn"]) for z in rows)
 print("F = %s, Hertz a = %s, active vertices up to r = %s, inactive from "
       "r = %s" % (rounded(f[2], 4), rounded(a, 3), rounded(r_active, 3),

@@ -57,7 +57,7 @@ for solver in ["monotone multigrid", "active set"]:
     compare(p, f, 2, "2D half square, " + solver)
     halves[solver] = p
     rows = plane_rows(p, 0)
-    check(len(rows) == 1 and rows[0]["active"] == "1",
+    check(len(rows) == 1 and rows[0]["in_contact"] == "1",
           "2D, " + solver + ": the corner on the plane is an active contact vertex")
     check(f["active"] == 2 * p["active"] - 1,
           "2D, " + solver + ": active(full) = 2 active(half) - 1 (the plane's vertex once)")
@@ -80,7 +80,7 @@ full3 = ["Geometry/Box lower corner=-1, -1, 0", "Geometry/Box subdivisions=2, 2,
 q = R.run("prm/cube3d.prm", gap3 + quarter, name="quarter_cube")
 f = R.run("prm/cube3d.prm", gap3 + full3, name="full_cube")
 compare(q, f, 4, "3D quarter cube")
-p_x, p_y = ([r for r in plane_rows(q, a) if r["active"] == "1"] for a in (0, 1))
+p_x, p_y = ([r for r in plane_rows(q, a) if r["in_contact"] == "1"] for a in (0, 1))
 print("3D quarter cube: active contact vertices on x = 0: %d, on y = 0: %d" % (len(p_x), len(p_y)))
 check(any(float(r["y"]) == 0. for r in p_x), "3D quarter cube: the corner on both planes is active")
 # a vertex off the planes has 4 mirror images, one on a single plane 2,

@@ -91,7 +91,7 @@ def same_answer(base, run, s, m, dim, label):
         "max |u|": relative_difference(base["max_displacement"], run["max_displacement"] / s),
         "max von Mises": relative_difference(base["max_von_mises"], run["max_von_mises"] / m)}
     a, b = contact_rows(base), contact_rows(run)
-    check(len(a) == len(b) and all(x["active"] == y["active"] for x, y in zip(a, b)),
+    check(len(a) == len(b) and all(x["in_contact"] == y["in_contact"] for x, y in zip(a, b)),
           label + ": the same contact vertices, active at the same ones")
     if len(a) == len(b):
         differences["u_n"] = relative_difference([float(x["u_n"]) for x in a],

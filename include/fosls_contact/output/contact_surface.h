@@ -4,19 +4,28 @@
 #include <deal.II/numerics/data_out_faces.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <fosls_contact/output/contact_table.h>
 #include <fosls_contact/scene/scene.h>
+
+#include <map>
 
 namespace FoslsContact
 {
   /**
    * The contact boundary as a surface of its own for ParaView
    * (contact_surface_0000.pvtu): the faces of the owned cells on Gamma_C,
-   * with the contact pressure -(sigma n_b).n, the normal displacement u.n
-   * and the remaining gap g - u.n (0 where the body touches the obstacle),
-   * in the scene's units (the solution and mapping of
-   * Postprocessor::solution_in_scene_units()). A surface of its own,
-   * because these quantities live on the boundary only; the contact table
-   * (contact.csv) has them at the vertices.
+   * with the values of contact.csv at their vertices, under its names
+   * (ContactTable::local_rows()): contact_pressure = -sigma_nn, the
+   * normal displacement u_n, the initial gap g, the remaining gap g - u_n
+   * and in_contact (1 where u_n = g), in the scene's units; and
+   * face_pressure, the face's own -(sigma n_b).n. RT0's normal traction is
+   * constant on each face and jumps between faces; contact.csv gives a
+   * vertex the mean of its faces, which is what the zone's peak and mean
+   * pressure are made of, while the face values are what integrates to
+   * the contact force exactly (the vertex means smear the zone's edge by
+   * a face: on the steel cylinder's 2-level mesh their integral is 40%
+   * off the force, on the 5-level square 8e-9). A surface of its own,
+   * because these quantities live on the boundary only.
    */
   template <int dim>
   class ContactSurface : public DataOutFaces<dim>
@@ -33,14 +42,20 @@ namespace FoslsContact
     class Fields : public DataPostprocessor<dim>
     {
     public:
-      explicit Fields(const Scene<dim> &scene);
+      /**
+       * @p rows: ContactTable::local_rows() of the solution shown, by
+       * vertex index; kept by reference.
+       */
+      Fields(const Scene<dim> &                                              scene,
+             const std::map<unsigned int, typename ContactRow<dim>::Values> &rows);
       void evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
                                  std::vector<Vector<double>> &computed) const override;
       std::vector<std::string> get_names() const override;
       UpdateFlags              get_needed_update_flags() const override;
 
     private:
-      const Scene<dim> &scene;
+      const Scene<dim> &                                              scene;
+      const std::map<unsigned int, typename ContactRow<dim>::Values> &rows;
     };
 
   private:

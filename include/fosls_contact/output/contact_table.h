@@ -4,6 +4,7 @@
 #include <fosls_contact/discretization/discretization.h>
 
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -19,17 +20,20 @@ namespace FoslsContact
     static constexpr unsigned int x        = 0;       ///< position (dim)
     static constexpr unsigned int u        = dim;     ///< displacement (dim)
     static constexpr unsigned int u_n      = 2 * dim; ///< normal displacement
-    static constexpr unsigned int gap      = 2 * dim + 1;
-    static constexpr unsigned int sigma_nn = 2 * dim + 2; ///< mean normal traction
+    /** The initial gap g (Data/Gap) along the obstacle normal. */
+    static constexpr unsigned int gap           = 2 * dim + 1;
+    /** The remaining gap g - u_n: 0 where the body touches the obstacle. */
+    static constexpr unsigned int remaining_gap = 2 * dim + 2;
+    static constexpr unsigned int sigma_nn      = 2 * dim + 3; ///< mean normal traction
     /**
      * The vertex's share of the contact boundary: the measure of its
      * contact faces, each divided among its vertices (in the scene's units,
      * length^(dim-1)); the weights of a quadrature over the contact
      * boundary.
      */
-    static constexpr unsigned int share    = 2 * dim + 3;
-    static constexpr unsigned int active   = 2 * dim + 4; ///< 1 in contact, else 0
-    static constexpr unsigned int size     = 2 * dim + 5;
+    static constexpr unsigned int share      = 2 * dim + 4;
+    static constexpr unsigned int in_contact = 2 * dim + 5; ///< 1 in contact, else 0
+    static constexpr unsigned int size       = 2 * dim + 6;
     using Values                           = std::array<double, size>;
   };
 
@@ -56,6 +60,15 @@ namespace FoslsContact
      * in contact (u_n = g), else 0. On the first process; collective.
      */
     std::vector<typename ContactRow<dim>::Values> rows(const LevelVector &x_rotated) const;
+    /**
+     * The rows of every contact vertex of this process's owned and ghost
+     * cells, by vertex index (the pressure of a vertex of an owned cell is
+     * complete: every face at it belongs to an owned or a ghost cell): what
+     * the contact surface shows at the vertices, so that it has
+     * contact.csv's values. Not collective.
+     */
+    std::map<unsigned int, typename ContactRow<dim>::Values>
+    local_rows(const LevelVector &x_rotated) const;
 
     /** rows() as CSV text (on the first process; collective). */
     std::string csv(const LevelVector &x_rotated) const;

@@ -59,6 +59,8 @@ namespace FoslsContact
     {
       bool     present = false;
       Identity self, replaces;
+      /** The process id of the run, in the names it gives (empty if unknown). */
+      std::string pid;
 
       explicit Record(const fs::path &directory)
       {
@@ -73,7 +75,11 @@ namespace FoslsContact
             if (!(words >> a))
               continue;
             if (a == "fosls-contact" && words >> b && b == "staging" && words >> id.device >> id.inode)
-              self = {id.device, id.inode, true};
+              {
+                self = {id.device, id.inode, true};
+                if (!(words >> pid) || pid.find_first_not_of("0123456789") != std::string::npos)
+                  pid.clear();
+              }
             else if (a == "replaces" && words >> id.device >> id.inode)
               replaces = {id.device, id.inode, true};
           }
@@ -249,6 +255,38 @@ namespace FoslsContact
       throw std::runtime_error(message + "; the results are kept in " + FileSystem::quoted(kept));
     }
 
+    /**
+     * The run that made @p record was killed while it undid a swap with
+     * something that had taken the place of @p directory just before (see
+     * DirectorySwap::replace): that is put back, found under the name the
+     * swap gave it (the record names the run's process), and the results
+     * are kept in `<name>.results-<pid>`, as the run would have done. With
+     * the exchange (@p published: the results are in the place of
+     * @p directory) it is exchanged back; with the two renames (nothing is
+     * in that place) renamed back.
+     */
+    void
+    restore_displaced(const fs::path &directory, const Record &record, const bool published)
+    {
+      if (record.pid.empty())
+        return;
+      const fs::path    parent = directory.parent_path();
+      const std::string name   = directory.filename().string();
+      const fs::path    aside  = parent / ("." + name + ".staging-" + record.pid + (published ? "" : "-old"));
+      if (!FileSystem::present(aside) || Record(aside).unpublished(aside))
+        return;
+      if (!published)
+        {
+          ::rename(aside.c_str(), directory.c_str());
+          return;
+        }
+      if (::renameat2(AT_FDCWD, directory.c_str(), AT_FDCWD, aside.c_str(), RENAME_EXCHANGE) != 0)
+        return;
+      const fs::path kept = parent / (name + ".results-" + record.pid);
+      if (::rename(aside.c_str(), kept.c_str()) == 0)
+        ::unlink((kept / DirectorySwap::record_name).c_str());
+    }
+
     /** What the file type @p mode is, for messages. */
     std::string
     kind(const mode_t mode)
@@ -319,7 +357,8 @@ namespace FoslsContact
       fail("create", fd);
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
       fail("lock", fd);
-    const std::string line = "fosls-contact staging " + text(identity(staging)) + "\n";
+    const std::string line =
+      "fosls-contact staging " + text(identity(staging)) + " " + std::to_string(::getpid()) + "\n";
     if (::write(fd, line.data(), line.size()) != static_cast<ssize_t>(line.size()) ||
         ::fsync(fd) != 0)
       fail("write", fd);
@@ -353,6 +392,7 @@ namespace FoslsContact
     if (FileSystem::present(directory / record_name))
       {
         const Record record(directory);
+        bool         found = false;
         if (record.self == identity(directory))
           for (const auto &old : stagings(directory))
             if (identity(old) == record.replaces)
@@ -361,7 +401,10 @@ namespace FoslsContact
                 for (const auto &name : read_manifest(directory))
                   program.insert(name);
                 carry_over(old, directory, program);
+                found = true;
               }
+        if (!found && record.self == identity(directory) && record.replaces.valid)
+          restore_displaced(directory, record, true);
         ::unlink((directory / record_name).c_str());
         FileSystem::sync(directory);
       }
@@ -377,6 +420,8 @@ namespace FoslsContact
           for (const auto &old : stagings(directory))
             if (identity(old) == record.replaces)
               ::rename(old.c_str(), directory.c_str());
+          if (!FileSystem::present(directory))
+            restore_displaced(directory, record, false);
         }
 
     // staging directories that were never published are removed; what

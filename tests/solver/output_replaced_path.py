@@ -13,7 +13,9 @@
 #  - just before the rename that publishes (stopped there by
 #    tests/solver/fault_injection.cc, FOSLS_FAULT_STOP_AT): with
 #    RENAME_EXCHANGE, with the two renames of a filesystem without it, and
-#    for a new directory.
+#    for a new directory;
+#  - the same, and the run killed as it undoes the rename: the next run
+#    puts the file back (and is refused, as the path is a file).
 import os
 import re
 import shutil
@@ -145,4 +147,30 @@ for label, fault in [("with RENAME_EXCHANGE", {}),
 changed_before_rename("a file made just before the first rename", "first",
                       lambda: file_with("first", "the user's file\n"),
                       lambda: content("first") == "the user's file\n", {})
+
+# killed as it undoes the rename (call 1: the exchange, or the exchange
+# that fails and call 2 the first of the two renames; the next call undoes
+# it), then the next run
+for label, fault in [("with RENAME_EXCHANGE", {"FOSLS_FAULT_KILL_AT": "2"}),
+                     ("two renames", {"FOSLS_FAULT_NO_EXCHANGE": "1", "FOSLS_FAULT_KILL_AT": "3"})]:
+    label = "killed as it undoes the rename, " + label
+    directory = "undo_" + ("exchange" if len(fault) == 1 else "renames")
+    rc, out, err = execute(command(directory))
+    env = dict(os.environ, LD_PRELOAD=shim, FOSLS_FAULT_PATH=directory, FOSLS_FAULT_STOP_AT="1")
+    env.update(fault)
+    run = subprocess.Popen(command(directory), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                           env=env)
+    wait_stopped(run.pid)
+    by_file(directory)()
+    os.kill(run.pid, signal.SIGCONT)
+    run.communicate()
+    print("--- %s: exit code %s" % (label, run.returncode))
+    rc, out, err = execute(command(directory))
+    check(run.returncode == -9 and rc == 1
+          and one_error_line(err, "Output/Directory", "exists and is not a directory"),
+          label + ": the next run: exit code 1, one line naming Output/Directory")
+    check(content(directory) == "the user's file\n"
+          and content(directory + ".moved/summary.json") is not None,
+          label + ": the file is back, the directory moved away intact")
+    check(leftovers(directory) == [], label + ": no staging directory or lock file left")
 finish()

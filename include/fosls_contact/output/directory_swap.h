@@ -32,7 +32,12 @@ namespace FoslsContact
    *    new path): undone; the old directory stays (the aside directory of
    *    the two renames is renamed back), the staging directory is removed;
    *  - after it: finished; the user's entries move from the old directory
-   *    into the new one, the old run's files are removed.
+   *    into the new one, the old run's files are removed;
+   *  - while undoing a rename that took something else than the recorded
+   *    directory away (the path changed just before it; replace() undoes
+   *    that and keeps the results in `<name>.results-<pid>`): that is put
+   *    back under the directory's name, found by the name the rename gave
+   *    it (the record names the run's process id).
    *
    * Everything in a staging directory whose record describes it was
    * written by its run (or is a hard link to a file of the directory), so

@@ -15,7 +15,6 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <stdexcept>
 
@@ -24,35 +23,6 @@ namespace FoslsContact
   namespace fs = std::filesystem;
 
   const std::string OutputDirectory::manifest_name = ".fosls-contact-files";
-
-  namespace
-  {
-
-    /** The file names listed in the manifest of @p directory. */
-    std::set<std::string>
-    read_manifest(const fs::path &directory)
-    {
-      std::set<std::string> names;
-      std::ifstream         in(directory / OutputDirectory::manifest_name);
-      std::string           line;
-      while (std::getline(in, line))
-        if (!line.empty() && line.find('/') == std::string::npos && line != "." &&
-            line != "..")
-          names.insert(line);
-      return names;
-    }
-
-    /** Whether @p name is the name of a file the program writes. */
-    bool
-    is_output_name(const std::string &name)
-    {
-      static const std::regex piece("solution_0000\\.[0-9]+\\.vtu");
-      return name == "contact.csv" || name == "convergence.csv" || name == "summary.json" ||
-             name == "used_parameters.prm" || name == "solution_0000.pvtu" ||
-             name == OutputDirectory::manifest_name || std::regex_match(name, piece);
-    }
-  } // namespace
-
 
   OutputDirectory::OutputDirectory(const std::string &directory, const MPI_Comm comm)
     : given(directory)
@@ -87,6 +57,48 @@ namespace FoslsContact
   void
   OutputDirectory::prepare()
   {
+    resolve();
+    // (a refused run makes no parent directories inside the other run's
+    // directory; the check after the lock is the one that cannot miss it)
+    check_nesting();
+    make_parents();
+    mode_t mode = 0;
+    if (FileSystem::present(directory, &mode) && !S_ISDIR(mode))
+      throw std::runtime_error(parameter() + ": exists and is not a directory");
+    lock();
+    check_nesting();
+    // what runs that were killed left: finished or undone, before the
+    // directory is judged
+    DirectorySwap::recover(directory, parameter());
+    check_existing();
+
+    staging = directory.parent_path() /
+              ("." + directory.filename().string() + ".staging-" + std::to_string(::getpid()));
+    if (::mkdir(staging.c_str(), 0777) != 0)
+      {
+        const int      error = errno;
+        const fs::path path  = staging;
+        staging.clear(); // (not this run's to remove)
+        throw std::runtime_error(parameter() + ": cannot make the staging directory " +
+                                 FileSystem::quoted(path) + ": " + FileSystem::system_error(error));
+      }
+    try
+      {
+        record_fd = DirectorySwap::make_record(staging, parameter());
+      }
+    catch (...)
+      {
+        ::unlink((staging / DirectorySwap::record_name).c_str());
+        ::rmdir(staging.c_str());
+        staging.clear();
+        throw;
+      }
+  }
+
+
+  void
+  OutputDirectory::resolve()
+  {
     const auto fail = [&](const std::string &what) {
       throw std::runtime_error(parameter() + ": " + what);
     };
@@ -105,21 +117,25 @@ namespace FoslsContact
           fail("a symbolic link to nothing (" + error.message() + ")");
       }
     // the swap moves the directory: not the one the run works in
-    {
-      std::error_code error;
-      const fs::path  current = fs::current_path(error);
-      const fs::path  target  = fs::weakly_canonical(directory, error);
-      if (!error && std::mismatch(target.begin(), target.end(), current.begin(),
-                                  current.end()).first == target.end())
-        fail("contains the current directory; name a directory of its own");
-    }
-    const fs::path parent = directory.parent_path();
-    const std::string name = directory.filename().string();
+    std::error_code error;
+    const fs::path  current = fs::current_path(error);
+    const fs::path  target  = fs::weakly_canonical(directory, error);
+    if (!error &&
+        std::mismatch(target.begin(), target.end(), current.begin(), current.end()).first == target.end())
+      fail("contains the current directory; name a directory of its own");
+  }
 
-    // the parent directories: existing ones must be directories, missing
-    // ones are made (and removed again if the run publishes nothing)
+
+  void
+  OutputDirectory::make_parents()
+  {
+    // existing parent directories must be directories, missing ones are
+    // made (and removed again if the run publishes nothing)
+    const auto fail = [&](const std::string &what) {
+      throw std::runtime_error(parameter() + ": " + what);
+    };
     std::vector<fs::path> missing;
-    for (fs::path p = parent; !p.empty(); p = p.parent_path())
+    for (fs::path p = directory.parent_path(); !p.empty(); p = p.parent_path())
       {
         struct stat status;
         if (::stat(p.c_str(), &status) == 0)
@@ -140,36 +156,19 @@ namespace FoslsContact
           fail("cannot make the directory " + FileSystem::quoted(*p) + ": " + FileSystem::system_error(errno));
         made.push_back(*p);
       }
-    if (FileSystem::present(directory, &mode))
-      {
-        struct stat status;
-        if (::stat(directory.c_str(), &status) != 0 || !S_ISDIR(status.st_mode))
-          fail("exists and is not a directory");
-        if (::access(directory.c_str(), R_OK | W_OK | X_OK) != 0)
-          fail("cannot be read and written: " + FileSystem::system_error(errno));
-        // the results are published by renaming a staging directory in
-        // its place, which a mount point refuses (EBUSY): found here, not
-        // after the computation
-        struct stat above;
-        if (::stat(parent.c_str(), &above) == 0 && above.st_dev != status.st_dev)
-          fail("is a mount point, which the program cannot replace by its results (it "
-               "renames a directory in its place); name a directory inside it");
-        // the run replaces the directory: only one it wrote (its list is
-        // there), or one that holds nothing but output files (an earlier
-        // version's), never someone's other directory (/tmp, a home)
-        if (!FileSystem::present(directory / manifest_name))
-          for (const auto &entry : FileSystem::list(directory))
-            if (!is_output_name(entry) && entry.rfind(".staging-", 0) != 0)
-              fail("exists and holds '" + ErrorLine::quote(entry) +
-                   "', which fosls-contact did not write (the directory has no " +
-                   manifest_name + "); name a new or empty directory, or one "
-                   "fosls-contact wrote");
-      }
+  }
 
-    // the lock: a second run into the directory fails here, at once. The
-    // lock file is removed when the run ends, so after locking it must
-    // still be the file of that name.
-    lock_path = parent / ("." + name + ".lock");
+
+  void
+  OutputDirectory::lock()
+  {
+    // a second run into the directory fails here, at once. The lock file
+    // is removed when the run ends, so after locking it must still be the
+    // file of that name.
+    const auto fail = [&](const std::string &what) {
+      throw std::runtime_error(parameter() + ": " + what);
+    };
+    lock_path = directory.parent_path() / ("." + directory.filename().string() + ".lock");
     for (;;)
       {
         lock_fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
@@ -185,41 +184,88 @@ namespace FoslsContact
                    FileSystem::quoted(lock_path) + "); wait for it or choose another directory");
             fail("cannot lock " + FileSystem::quoted(lock_path) + ": " + FileSystem::system_error(error));
           }
-        struct stat held, named;
-        if (::fstat(lock_fd, &held) == 0 && ::lstat(lock_path.c_str(), &named) == 0 &&
-            held.st_dev == named.st_dev && held.st_ino == named.st_ino)
+        if (held_is_named())
           break;
         ::close(lock_fd);
         lock_fd = -1;
       }
+  }
 
-    // staging directories of runs that were killed
-    const std::string stale_prefix = "." + name + ".staging-";
-    for (const auto &entry : FileSystem::list(parent))
-      if (entry.rfind(stale_prefix, 0) == 0)
-        clean_stale(parent / entry);
 
-    staging = parent / (stale_prefix + std::to_string(::getpid()));
-    if (::mkdir(staging.c_str(), 0777) != 0)
-      fail("cannot make the staging directory " + FileSystem::quoted(staging) + ": " + FileSystem::system_error(errno));
+  bool
+  OutputDirectory::held_is_named() const
+  {
+    struct stat held, named;
+    return ::fstat(lock_fd, &held) == 0 && ::lstat(lock_path.c_str(), &named) == 0 &&
+           held.st_dev == named.st_dev && held.st_ino == named.st_ino;
   }
 
 
   void
-  OutputDirectory::clean_stale(const fs::path &stale) const
+  OutputDirectory::check_nesting() const
   {
-    // only what the program wrote: the files it lists or names, and the
-    // hard links of files carried over (the same file is in the directory)
-    const auto listed = read_manifest(stale);
-    for (const auto &name : FileSystem::list(stale))
+    // Each run holds its lock from before this check to its end, so of two
+    // runs, one into a directory inside the other's, the later one finds
+    // the other's lock: above its directory, or inside it.
+    const std::string advice = "; wait for it or choose a directory outside it";
+    for (fs::path p = directory.parent_path(); p.has_filename(); p = p.parent_path())
       {
-        mode_t mode = 0;
-        if (!FileSystem::present(stale / name, &mode) || S_ISDIR(mode))
-          continue;
-        if (listed.count(name) || is_output_name(name) || FileSystem::same_file(stale / name, directory / name))
-          ::unlink((stale / name).c_str());
+        const fs::path other = p.parent_path() / ("." + p.filename().string() + ".lock");
+        if (DirectorySwap::locked(other))
+          throw std::runtime_error(parameter() + ": lies inside " + FileSystem::quoted(p) +
+                                   ", the output directory of a run of fosls-contact that is "
+                                   "still running (lock file " + FileSystem::quoted(other) + ")" +
+                                   advice);
       }
-    ::rmdir(stale.c_str());
+    mode_t mode = 0;
+    if (!FileSystem::present(directory, &mode) || !S_ISDIR(mode))
+      return;
+    std::error_code error;
+    for (fs::recursive_directory_iterator
+           it(directory, fs::directory_options::skip_permission_denied, error), end;
+         !error && it != end; it.increment(error))
+      {
+        const std::string name = it->path().filename().string();
+        if (name.size() > 6 && name.front() == '.' && name.compare(name.size() - 5, 5, ".lock") == 0 &&
+            DirectorySwap::locked(it->path()))
+          throw std::runtime_error(parameter() + ": holds " +
+                                   FileSystem::quoted(it->path().parent_path() /
+                                                      name.substr(1, name.size() - 6)) +
+                                   ", the output directory of a run of fosls-contact that is "
+                                   "still running (lock file " + FileSystem::quoted(it->path()) +
+                                   ")" + advice);
+      }
+  }
+
+
+  void
+  OutputDirectory::check_existing() const
+  {
+    const auto fail = [&](const std::string &what) {
+      throw std::runtime_error(parameter() + ": " + what);
+    };
+    struct stat status;
+    if (::lstat(directory.c_str(), &status) != 0)
+      return;
+    if (!S_ISDIR(status.st_mode))
+      fail("exists and is not a directory");
+    if (::access(directory.c_str(), R_OK | W_OK | X_OK) != 0)
+      fail("cannot be read and written: " + FileSystem::system_error(errno));
+    // the results are published by renaming a staging directory in its
+    // place, which a mount point refuses (EBUSY): found here, not after the
+    // computation
+    struct stat above;
+    if (::stat(directory.parent_path().c_str(), &above) == 0 && above.st_dev != status.st_dev)
+      fail("is a mount point, which the program cannot replace by its results (it "
+           "renames a directory in its place); name a directory inside it");
+    // the run replaces the directory: only one it wrote (its list is
+    // there), or one that holds nothing but output files (an earlier
+    // version's), never someone's other directory (/tmp, a home)
+    const std::string entry = DirectorySwap::foreign_entry(directory);
+    if (!entry.empty())
+      fail("exists and holds '" + ErrorLine::quote(entry) +
+           "', which fosls-contact did not write (the directory has no " + manifest_name +
+           "); name a new or empty directory, or one fosls-contact wrote");
   }
 
 
@@ -282,11 +328,7 @@ namespace FoslsContact
       for (const auto &n : names)
         out << n << '\n';
     });
-    DirectorySwap::replace(directory,
-                           staging,
-                           names,
-                           FileSystem::present(directory) ? read_manifest(directory) : std::set<std::string>(),
-                           parameter());
+    DirectorySwap::replace(directory, staging, record_fd, names, parameter());
     published = true;
   }
 
@@ -303,13 +345,17 @@ namespace FoslsContact
     if (!first)
       return;
     if (!published && !staging.empty())
+      DirectorySwap::discard(staging);
+    if (record_fd >= 0)
       {
-        std::error_code error;
-        fs::remove_all(staging, error);
+        ::close(record_fd);
+        record_fd = -1;
       }
     if (lock_fd >= 0)
       {
-        ::unlink(lock_path.c_str());
+        // (only if it is still this run's lock file)
+        if (held_is_named())
+          ::unlink(lock_path.c_str());
         ::close(lock_fd);
         lock_fd = -1;
       }

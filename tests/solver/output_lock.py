@@ -4,7 +4,10 @@
 # directory held one run's .vtu next to the other's summary.json.) The
 # first run (the square on 6 levels) is stopped with SIGSTOP as soon as it
 # prints its scene, after it locked the directory, and continued after the
-# second run ended, so the test does not depend on timing.
+# second run ended, so the test does not depend on timing. The same with
+# the lock file removed while the first run is stopped: the second run
+# finds the first one's staging directory in use (found by probing: it
+# removed it, and the first run failed).
 import os
 import re
 import signal
@@ -51,4 +54,24 @@ check(levels_written() == (6, 6), "the directory holds the first run's files")
 rc, out, err = execute(command(2), timeout=120)
 check(rc == 0 and levels_written() == (2, 2), "a run after it: exit code 0, its files")
 check(leftovers(directory) == [], "no staging directory or lock file left")
+
+# the lock file removed while a run is running: a second run still fails,
+# and leaves the running run's staging directory alone
+first = subprocess.Popen(command(6), stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+for line in iter(first.stdout.readline, b""):
+    if line.startswith(b"Scene:"):
+        break
+os.kill(first.pid, signal.SIGSTOP)
+os.unlink("." + directory + ".lock")
+rc, out, err = execute(command(2), timeout=120)
+print("--- lock file removed, second run: exit code %s" % rc)
+check(rc == 1 and one_error_line(err, "Output/Directory", "another run"),
+      "lock file removed: the second run: exit code 1, one line naming Output/Directory")
+check(os.path.isdir(".%s.staging-%d" % (directory, first.pid)),
+      "lock file removed: the first run's staging directory is still there")
+os.kill(first.pid, signal.SIGCONT)
+out, err = first.communicate()
+check(first.returncode == 0 and err == b"" and levels_written() == (6, 6),
+      "lock file removed: the first run: exit code 0, its files")
+check(leftovers(directory) == [], "lock file removed: no staging directory or lock file left")
 finish()

@@ -14,28 +14,34 @@ namespace FoslsContact
 {
   /**
    * The output directory of one run (parameter Output/Directory), whose
-   * files appear all at once when the run ends, or not at all.
+   * files appear all at once when the run ends, or not at all, and which
+   * never loses or hides a file of the user's, wherever a run is killed.
    *
    * The constructor, called before the set-up, checks that the directory
-   * can be made and written, locks it against a second run into it (flock
-   * on `.<name>.lock` beside it: the second run fails at once) and makes a
-   * staging directory `.<name>.staging-<pid>` beside it; an unusable
-   * directory is an error before any work is done. The run writes every
-   * file into the staging directory (each process its own pieces) and
-   * fsyncs it; publish() then puts the staging directory in the place of
-   * the old directory in one step (renameat2 with RENAME_EXCHANGE; where
-   * the filesystem refuses that, two renames, between which the path
-   * briefly does not exist, but never holds files of two runs).
+   * can be made and written and locks it against a second run into it
+   * (flock on `.<name>.lock` beside it: the second run fails at once). A
+   * run into a directory inside the output directory of a running run, or
+   * into a directory that holds the output directory of a running run, is
+   * refused too: the publication of the outer one moves the inner one.
+   * Then it repairs what killed runs left (DirectorySwap::recover) and
+   * makes a staging directory `.<name>.staging-<pid>` beside it, with the
+   * record that identifies it (DirectorySwap); an unusable directory is an
+   * error before any work is done. The run writes every file into the
+   * staging directory (each process its own pieces) and fsyncs it;
+   * publish() then puts the staging directory in the place of the old
+   * directory in one step (DirectorySwap::replace).
    *
    * Files the run did not write are kept: a file `.fosls-contact-files` in
    * the directory lists the files the run wrote; the next run removes
    * those of them it does not write again, and carries every other file
-   * and directory over into the new directory (files as hard links before
-   * the swap, directories moved after it). A file with the name of an
+   * and directory over into the new directory. A file with the name of an
    * output file is replaced. As the directory is replaced, it must be one
    * the program wrote (with that list), or new, or hold nothing but output
    * files: the swap never takes someone's other directory (/tmp, a home
-   * directory, the current directory).
+   * directory, the current directory). That is checked again when the
+   * results are published: if the path has become a file or such a
+   * directory during the run, it is left alone and the results are kept
+   * in `<name>.results-<pid>` beside it.
    *
    * Every error is thrown on every process with the same one-line text,
    * naming Output/Directory; the destructor removes the staging
@@ -72,10 +78,27 @@ namespace FoslsContact
   private:
     /** The work of the constructor on the first process. */
     void prepare();
+    /**
+     * The absolute path of the directory (a symbolic link followed), which
+     * must not contain the current directory.
+     */
+    void resolve();
+    /** Make the missing parent directories (noted in #made). */
+    void make_parents();
+    /** Lock the directory: flock on #lock_path. */
+    void lock();
+    /** Whether the locked file is (still) the file named #lock_path. */
+    bool held_is_named() const;
+    /**
+     * Refuse a directory inside the output directory of a running run, or
+     * one that holds the output directory of a running run (their lock
+     * files are held).
+     */
+    void check_nesting() const;
+    /** Check that the existing directory may be written and replaced. */
+    void check_existing() const;
     /** The work of publish() on the first process (DirectorySwap). */
     void publish_here(const std::set<std::string> &names);
-    /** Remove the staging or old directory @p stale of an earlier run (killed). */
-    void clean_stale(const std::filesystem::path &stale) const;
     /**
      * Remove the staging directory (unless published), the lock file and
      * the parent directories made (unless published).
@@ -89,6 +112,8 @@ namespace FoslsContact
     const bool            first;
     std::filesystem::path directory, staging, lock_path;
     int                   lock_fd = -1;
+    /** The record of the staging directory, locked while the run lives. */
+    int record_fd = -1;
     /** Parent directories this run made (removed if nothing is published). */
     std::vector<std::filesystem::path> made;
     /** The files this process wrote. */

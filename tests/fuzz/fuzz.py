@@ -1,7 +1,8 @@
 """Fuzz the command line, the scene files and the parameter values of
 fosls-contact.
 
-usage: fuzz.py FOSLS_CONTACT SOURCE_DIR [--cases N] [--mesh-cases M] [--seed S] [--jobs J]
+usage: fuzz.py FOSLS_CONTACT SOURCE_DIR [--cases N] [--mesh-cases M] [--mpi-cases P]
+                [--seed S] [--jobs J]
 
 Generates N cases (default 600) with a fixed seed (default 1) from the
 scenes in tests/scenes (Geometry/Levels = 2, at most 20 iterations, one
@@ -35,6 +36,15 @@ byte order mark and CRLF line ends. Beyond the failures above, a mesh
 case fails if a corruption that must be refused (all but the truncation)
 runs (exit code other than 1), or if a valid mesh (none, BOM and CRLF) is
 refused (exit code 1).
+
+Then P MPI cases (default 20; --mpi-cases P, a generator of their own):
+two processes started by one mpirun with `-np 1 A : -np 1 B`, where B is
+A or differs in one drawn way: another --set value (Levels, solver, output
+directory, adaptivity, dimension), an option on one process only (--help,
+--version, --print-parameters), or another scene file (a line changed). A
+case fails beyond the failures above if processes with different inputs
+are not refused with exit code 1 (or hang), or if the same inputs are
+refused.
 
 Prints the number of cases and of failures of each kind (all 0 when the
 program is right); every failing case is printed with the command that
@@ -442,6 +452,39 @@ def make_mesh_case(rng, source):
     return arguments, files, "mesh " + corruption
 
 
+MPI_DIFFERENCES = ["same", "set", "option", "scene"]
+MPI_SETTINGS = ["Geometry/Levels=1", "Solver/Type=active set", "Output/Directory=other",
+                "Adaptivity/Steps=1", "Geometry/Dimension=3", "Solver/Cycle=V"]
+
+
+def make_mpi_case(rng, source):
+    """(arguments, files, kind) of an MPI case: the arguments of mpirun, with
+    the executable as '{EXE}'; kind is 'mpi <difference>'."""
+    difference = rng.choice(MPI_DIFFERENCES)
+    with open(os.path.join(source, "tests/scenes", "square.prm")) as f:
+        scene = f.read()
+    files = {"scene.prm": scene.encode()}
+    common = ["--set", "Geometry/Levels=2", "--set", "Solver/Max iterations=20",
+              "--set", "Solver/Threads=1", "--set", "Output/Verbose=false"]
+    a = ["scene.prm"] + common + ["--set", "Output/Directory=out"]
+    b = list(a)
+    if difference == "set":
+        b += ["--set", rng.choice(MPI_SETTINGS)]
+    elif difference == "option":
+        b += [rng.choice(["--help", "--version", "--print-parameters"])]
+    elif difference == "scene":
+        lines = scene.splitlines()
+        changed = [n for n, l in enumerate(lines) if l.strip().startswith("set ")]
+        n = rng.choice(changed)
+        lines[n] = lines[n] + " # changed" if rng.random() < 0.5 else "  set Levels = 1"
+        files["scene_b.prm"] = ("\n".join(lines) + "\n").encode()
+        b[0] = "scene_b.prm"
+    if rng.random() < 0.5:
+        a, b = b, a
+    arguments = ["-np", "1", "{EXE}"] + a + [":", "-np", "1", "{EXE}"] + b
+    return arguments, files, "mpi " + difference
+
+
 def listing(directory):
     found = []
     for root, dirs, names in os.walk(directory):
@@ -460,12 +503,28 @@ def run_case(number, arguments, files, kind):
     before = listing(directory)
     # (a command line cannot hold a NUL byte)
     command = [EXE] + [a.replace("\x00", "\x01") for a in arguments]
+    environment = None
+    if kind.startswith("mpi "):
+        command = [os.environ.get("MPIRUN", "mpirun"), "--oversubscribe"] + [
+            EXE if a == "{EXE}" else a for a in arguments]
+        environment = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
+                           OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     try:
         p = subprocess.run(command, cwd=directory, stdout=subprocess.PIPE,
-                           stderr=subprocess.PIPE, timeout=TIMEOUT, stdin=subprocess.DEVNULL)
+                           stderr=subprocess.PIPE, timeout=TIMEOUT, stdin=subprocess.DEVNULL,
+                           env=environment, start_new_session=True)
         rc, out, err = p.returncode, p.stdout, p.stderr
     except subprocess.TimeoutExpired:
         return number, "hang", command, "no end within %d s" % TIMEOUT
+    if kind.startswith("mpi "):
+        # (mpirun adds its own report of a process's exit code non-zero,
+        # between lines of dashes, after the program's line)
+        if b"\n-----" in err:
+            err = err[:err.index(b"\n-----") + 1]
+        if kind != "mpi same" and rc != 1:
+            return number, "different inputs run", command, "exit code %d" % rc
+        if kind == "mpi same" and rc not in (0, 2):
+            return number, "same inputs refused", command, repr(err[:300])
     after = listing(directory)
     if kind.startswith("mesh ") and rc >= 0:
         valid = kind[5:] in MESH_VALID
@@ -509,7 +568,8 @@ def run_case(number, arguments, files, kind):
 def main():
     global EXE
     arguments = sys.argv[1:]
-    options = {"--cases": "600", "--mesh-cases": "150", "--seed": "1", "--jobs": "2"}
+    options = {"--cases": "600", "--mesh-cases": "150", "--mpi-cases": "20", "--seed": "1",
+               "--jobs": "2"}
     while len(arguments) > 2:
         value = arguments.pop()
         options[arguments.pop()] = value
@@ -519,16 +579,19 @@ def main():
     cases = [make_case(rng, n, source, entries) for n in range(int(options["--cases"]))]
     mesh_rng = random.Random(int(options["--seed"]) + 1000)
     cases += [make_mesh_case(mesh_rng, source) for n in range(int(options["--mesh-cases"]))]
+    mpi_rng = random.Random(int(options["--seed"]) + 2000)
+    cases += [make_mpi_case(mpi_rng, source) for n in range(int(options["--mpi-cases"]))]
     failures = {k: [] for k in ["crash", "hang", "exit code", "error line",
                                 "files after an error", "output", "bad mesh accepted",
-                                "good mesh refused"]}
+                                "good mesh refused", "different inputs run",
+                                "same inputs refused"]}
     with concurrent.futures.ThreadPoolExecutor(int(options["--jobs"])) as pool:
         for number, failure, command, detail in pool.map(lambda c: run_case(c[0], *c[1]),
                                                          enumerate(cases)):
             if failure:
                 failures[failure].append((number, command, detail))
-    print("cases: %d (seed %s), of them mesh cases: %s" % (len(cases), options["--seed"],
-                                                           options["--mesh-cases"]))
+    print("cases: %d (seed %s), of them mesh cases: %s, MPI cases: %s"
+          % (len(cases), options["--seed"], options["--mesh-cases"], options["--mpi-cases"]))
     for kind, found in failures.items():
         print("%s: %d" % (kind, len(found)))
     for kind, found in failures.items():

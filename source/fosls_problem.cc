@@ -212,6 +212,10 @@ namespace FoslsContact
     // (so it comes after assemble()): set-up time, not solve time.
     TimerOutput::Scope t(timer, "Setup: solver");
     Timer              wall;
+    const std::string  warning =
+      SolverChoice<dim>::active_set_warning(parameters.solver.type, qp.size());
+    if (!warning.empty())
+      pcout << warning << std::endl;
     solver = SolverChoice<dim>::make(
       parameters.solver, *discretization, *transfer, qp, discretization->finest_level());
     // (released during the assembly where the checks did not need it)

@@ -30,7 +30,7 @@ namespace FoslsContact
       prm.enter_subsection("Boundary conditions");
       prm.declare_entry("Dirichlet boundary ids",
                         "",
-                        Patterns::List(Patterns::Integer(0, 255)),
+                        Patterns::List(Patterns::Integer(0, max_id)),
                         "Boundary ids with prescribed displacement.");
       prm.declare_entry("Dirichlet components",
                         "all",
@@ -42,11 +42,11 @@ namespace FoslsContact
                         "of Data/Traction (a roller).");
       prm.declare_entry("Neumann boundary ids",
                         "",
-                        Patterns::List(Patterns::Integer(0, 255)),
+                        Patterns::List(Patterns::Integer(0, max_id)),
                         "Boundary ids with prescribed traction.");
       prm.declare_entry("Contact boundary ids",
                         "",
-                        Patterns::List(Patterns::Integer(0, 255)),
+                        Patterns::List(Patterns::Integer(0, max_id)),
                         "Boundary ids of the contact boundary Gamma_C. Empty: "
                         "the scene has no contact and no contact machinery is "
                         "set up.");

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 
 namespace FoslsContact
@@ -99,8 +100,13 @@ namespace FoslsContact
     std::string
     Material::mu_source() const
     {
-      return given_as_e_nu ? "parameters 'Material/E' and 'nu' (mu = E / (2 (1 + nu)))" :
-                             "parameter 'Material/mu'";
+      if (!given_as_e_nu)
+        return "parameter 'Material/mu'";
+      // (the values as the scene gives them: mu is the program's)
+      std::ostringstream text;
+      text << "parameters 'Material/E' = " << youngs_modulus << " and 'nu' = " << poisson_ratio
+           << " (mu = E / (2 (1 + nu)))";
+      return text.str();
     }
   } // namespace Parameters
 } // namespace FoslsContact

@@ -3,6 +3,7 @@
 #include <fosls_contact/assembly/fosls_assembler.h>
 #include <fosls_contact/output/collective_error.h>
 #include <fosls_contact/output/json.h>
+#include <fosls_contact/problem/data_check.h>
 #include <fosls_contact/problem/problem_checks.h>
 #include <fosls_contact/qp/definiteness_check.h>
 #include <fosls_contact/qp/gathered_qp.h>
@@ -35,7 +36,12 @@ namespace FoslsContact
     // vertices, tractions at the faces), bounds (the gap at the contact
     // vertices) and the right-hand side (the body force); a data
     // expression that is NaN or Inf somewhere shows there, and is named
-    // here instead of as a NaN iterate later.
+    // here instead of as a NaN iterate later: by the parameter, its value
+    // and the point, from the values recorded where they are evaluated
+    // (DataCheck), which also refuses data too large or too small for
+    // double precision; the assembled values are checked for what the
+    // records cannot see.
+    DataCheck<dim>::check(parameters, scene, discretization.get_communicator());
     const auto &       fine = discretization.level(discretization.finest_level());
     std::vector<bool>  displacement(fine.n_local(), false);
     for (const auto &[vertex, dofs] : fine.vertex_dofs)

@@ -1,4 +1,5 @@
 #include <fosls_contact/output/error_line.h>
+#include <fosls_contact/parameters/boundary_conditions.h>
 #include <fosls_contact/scene/mesh_check.h>
 
 #include <algorithm>
@@ -449,6 +450,13 @@ namespace FoslsContact
       return text;
     };
 
+    if (version >= 40)
+      {
+        const std::string why = read_gmsh_entities(lines, version);
+        if (!why.empty())
+          return why;
+      }
+
     // nodes
     const std::size_t nodes_at = find(nodes_begin);
     if (nodes_at == lines.size())
@@ -589,6 +597,18 @@ namespace FoslsContact
                 if (first > words.size() || (version == 1 && first + n != words.size()))
                   return what + " does not hold the " + std::to_string(n) +
                          (version == 1 ? " nodes" : " tags") + " it announces" + another;
+                // (the physical tag: the region of format 1, the first tag of 2)
+                long tag = 0;
+                if ((version == 1 || n > 0) && integer(words[version == 1 ? 2 : 3], tag))
+                  {
+                    const std::map<long, unsigned int> dims = {
+                      {Kind::point, 0}, {Kind::line, 1}, {Kind::triangle, 2},
+                      {Kind::quadrilateral, 2}, {Kind::tetrahedron, 3}, {Kind::hexahedron, 3}};
+                    const std::string why = physical_tag_problem(
+                      tag, dims.count(type) ? dims.at(type) : 0, what + " has the physical tag");
+                    if (!why.empty())
+                      return why;
+                  }
               }
             if (type == Kind::point || type == Kind::line || type == Kind::triangle ||
                 type == Kind::quadrilateral || type == Kind::tetrahedron ||
@@ -614,6 +634,67 @@ namespace FoslsContact
                "the file ends in its " + elements_begin + " section, before " + elements_end :
                line_of(cursor.number) + quote(cursor.words[0]) + " where " + elements_end +
                  " ends the " + elements_begin + " section";
+    return "";
+  }
+
+
+  std::string
+  MeshCheck::physical_tag_problem(const long         tag,
+                                  const unsigned int element_dim,
+                                  const std::string &what) const
+  {
+    const std::string most = std::to_string(Parameters::BoundaryConditions::max_id);
+    if (tag < 0)
+      return what + " " + std::to_string(tag) +
+             ", but it becomes a boundary id (of a face) or a material id (of a cell), a "
+             "number from 0 (deal.II's reader would take it as 0); number it 0 to " + most;
+    if (element_dim + 1 == dim && tag > long(Parameters::BoundaryConditions::max_id))
+      return what + " " + std::to_string(tag) + ", the boundary id of a face, out of the range "
+             "0 to " + most + " the program supports (the ids 'Boundary conditions' accepts); "
+             "number it 0 to " + most;
+    return "";
+  }
+
+
+  std::string
+  MeshCheck::read_gmsh_entities(const std::vector<std::string> &lines, const int version) const
+  {
+    std::size_t at = 0;
+    while (at < lines.size() && (split(lines[at]).empty() || split(lines[at])[0] != "$Entities"))
+      ++at;
+    if (at == lines.size())
+      return "";
+    // numPoints numCurves numSurfaces numVolumes, then one line per entity:
+    // tag, its box (4.1: a point's position alone), the number of physical
+    // tags and the tags
+    Cursor            cursor(lines, '$', at + 1);
+    std::vector<long> n;
+    if (!cursor.next() || !counts(cursor, 4, n))
+      return "";
+    const char *names[] = {"point", "curve", "surface", "volume"};
+    for (unsigned int d = 0; d < 4; ++d)
+      for (long e = 0; e < n[d]; ++e)
+        {
+          if (!cursor.next())
+            return "";
+          const std::size_t count_at = version == 41 && d == 0 ? 4 : 7;
+          long              n_tags   = 0;
+          if (cursor.words.size() <= count_at || !integer(cursor.words[count_at], n_tags))
+            return "";
+          for (long t = 0; t < n_tags && count_at + 1 + t < cursor.words.size(); ++t)
+            {
+              long tag = 0;
+              if (!integer(cursor.words[count_at + 1 + t], tag))
+                continue;
+              const std::string why =
+                physical_tag_problem(tag, d,
+                                     line_of(cursor.number) + "the " + names[d] + " " +
+                                       quote(cursor.words[0]) +
+                                       " of the $Entities section has the physical tag");
+              if (!why.empty())
+                return why;
+            }
+        }
     return "";
   }
 
@@ -789,6 +870,15 @@ namespace FoslsContact
             !integer(cursor.words[1], material))
           return line_of(cursor.number) + "the cell line " + quote(lines[cursor.number - 1]) +
                  " is not 'number material type nodes...'";
+        // (the material: a face's boundary id, a cell's material id)
+        const std::map<std::string, unsigned int> dims = {
+          {"pt", 0}, {"line", 1}, {"tri", 2}, {"quad", 2}, {"tet", 3}, {"hex", 3}};
+        const std::string problem = physical_tag_problem(
+          material,
+          dims.count(cursor.words[2]) ? dims.at(cursor.words[2]) : dim,
+          line_of(cursor.number) + "cell " + std::to_string(label) + " has the material");
+        if (!problem.empty())
+          return problem;
         // (cells of other types: deal.II's reader names them)
         if (kinds.count(cursor.words[2]))
           {

@@ -94,6 +94,48 @@ namespace FoslsContact
     }
 
     /**
+     * Why the *SURFACE name @p name (upper case) gives no boundary id the
+     * program can take, or "". deal.II's Abaqus reader takes all the digits
+     * of the name, wherever they are, as the surface's boundary id: SS-1
+     * becomes id 1 (the '-' dropped), S1TOP2 id 12, and a name without
+     * digits no id at all; so the name must hold its id as its only number,
+     * without a sign, and the id must be one that 'Boundary conditions'
+     * accepts (0 to 255).
+     */
+    std::string
+    surface_name_problem(const std::string &name)
+    {
+      std::string digits;
+      unsigned int groups = 0;
+      bool         signed_number = false;
+      for (std::size_t i = 0; i < name.size(); ++i)
+        if (std::isdigit(static_cast<unsigned char>(name[i])))
+          {
+            if (i == 0 || !std::isdigit(static_cast<unsigned char>(name[i - 1])))
+              {
+                ++groups;
+                signed_number = signed_number || (i > 0 && (name[i - 1] == '-' || name[i - 1] == '+'));
+              }
+            digits += name[i];
+          }
+      const std::string rule = "deal.II's reader takes the digits of a surface's name, all of "
+                               "them, as its boundary id: name each surface with its boundary id "
+                               "0 to 255 as the only number in the name, without a sign (e.g. "
+                               "NAME=SS1)";
+      const std::string what = "the *SURFACE NAME='" + ErrorLine::quote(name, 40) + "'";
+      if (groups == 0)
+        return what + " has no number, so no boundary id: " + rule;
+      if (groups > 1 || signed_number)
+        return what + " would become boundary id " + ErrorLine::quote(digits, 20) +
+               (signed_number ? " (the sign dropped)" : " (its numbers joined)") + ": " + rule;
+      if (digits.size() > 3 || std::stoi(digits) > 255)
+        return what + " gives the boundary id " + ErrorLine::quote(digits, 20) +
+               ", out of the range 0 to 255 the program supports (the ids 'Boundary "
+               "conditions' accepts): number the surface 0 to 255";
+      return "";
+    }
+
+    /**
      * The reason why the Abaqus @p text is no mesh of quadrilaterals (2D)
      * or hexahedra (3D) that deal.II's reader can take, or "". That reader
      * takes every element of every *ELEMENT block as a cell with 2^dim
@@ -110,6 +152,7 @@ namespace FoslsContact
       std::map<std::string, long> elset_max; // the largest element of an *ELSET
       std::string line, type, block, name, element;
       long        n_elements = 0;
+      unsigned int number    = 0; // of the line read last
       std::string reason;
       auto        finish = [&]() {
         // (an element continues on the next line after a trailing comma)
@@ -132,6 +175,7 @@ namespace FoslsContact
       };
       while (std::getline(in, line) && reason.empty())
         {
+          ++number;
           std::string t;
           for (const char c : upper(line))
             if (c != ' ' && c != '\t' && c != '\r')
@@ -149,6 +193,12 @@ namespace FoslsContact
               name = value_of(t, "ELSET");
               if (block == "elset" && t.find("GENERATE") != std::string::npos)
                 block = "generate";
+              if (block == "surface")
+                {
+                  const std::string why = surface_name_problem(value_of(t, "NAME"));
+                  if (!why.empty())
+                    reason = "line " + std::to_string(number) + ": " + why;
+                }
               continue;
             }
           if (block == "element")
@@ -254,7 +304,9 @@ namespace FoslsContact
         plain += '\n';
     text.swap(plain);
     const std::string reason = check_text(text, type);
-    AssertThrow(reason.empty(), ExcMessage(name() + " cannot be read: " + reason));
+    AssertThrow(reason.empty(),
+                ExcMessage(name() + (reason.rfind("line ", 0) == 0 ? ", " : " cannot be read: ") +
+                           reason));
     // what deal.II's readers would crash, hang or be misled on
     const MeshCheck check(text, type, dim);
     AssertThrow(check.problem().empty(), ExcMessage(name() + check.problem()));

@@ -2,6 +2,8 @@
 
 #include <fosls_contact/scene/scaled_function.h>
 
+#include <cmath>
+
 namespace FoslsContact
 {
   template <int dim>
@@ -19,7 +21,9 @@ namespace FoslsContact
   double
   ScaledFunction<dim>::value(const Point<dim> &p, const unsigned int component) const
   {
-    return factor * function.value(length * p, component);
+    const double f = function.value(length * p, component);
+    note(p, f);
+    return factor * f;
   }
 
 
@@ -28,6 +32,8 @@ namespace FoslsContact
   ScaledFunction<dim>::vector_value(const Point<dim> &p, Vector<double> &values) const
   {
     function.vector_value(length * p, values);
+    for (const double f : values)
+      note(p, f);
     values *= factor;
   }
 
@@ -37,6 +43,45 @@ namespace FoslsContact
   ScaledFunction<dim>::gradient(const Point<dim> &p, const unsigned int component) const
   {
     return (factor * length) * function.gradient(length * p, component);
+  }
+
+
+  template <int dim>
+  typename ScaledFunction<dim>::Record
+  ScaledFunction<dim>::record() const
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    return values_seen;
+  }
+
+
+  template <int dim>
+  void
+  ScaledFunction<dim>::note(const Point<dim> &p, const double f) const
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    Record &r = values_seen;
+    if (!std::isfinite(f))
+      {
+        if (r.finite)
+          {
+            r.finite        = false;
+            r.not_finite    = f;
+            r.not_finite_at = length * p;
+          }
+        return;
+      }
+    if (!seen || std::abs(f) > r.largest)
+      {
+        r.largest    = std::abs(f);
+        r.largest_at = length * p;
+      }
+    if (!seen || f < r.lowest)
+      {
+        r.lowest    = f;
+        r.lowest_at = length * p;
+      }
+    seen = true;
   }
 
   template class ScaledFunction<2>;

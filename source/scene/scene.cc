@@ -7,6 +7,7 @@
 #include <fosls_contact/scene/cell_shape_check.h>
 #include <fosls_contact/scene/curved_body.h>
 #include <fosls_contact/scene/data_expression.h>
+#include <fosls_contact/scene/mesh_parts.h>
 #include <fosls_contact/scene/scene.h>
 
 #include <cmath>
@@ -296,6 +297,13 @@ namespace FoslsContact
     for (const auto id : tria.get_boundary_ids())
       mesh_ids.insert(id);
     const std::string mesh = mesh_file ? "the " + mesh_file->name() : "the mesh";
+    // (deal.II's boundary ids go to 2^32 - 2, the parameters' to 255)
+    for (const auto id : mesh_ids)
+      AssertThrow(id <= Parameters::BoundaryConditions::max_id,
+                  ExcMessage("boundary id " + std::to_string(id) + " of " + mesh +
+                             " is out of the range 0 to " + std::to_string(Parameters::BoundaryConditions::max_id) +
+                             " the program supports (the ids 'Boundary conditions' accepts): "
+                             "renumber it in the mesh file"));
     for (const auto id : mesh_ids)
       AssertThrow(is_dirichlet(id) || is_neumann(id) || is_contact(id),
                   ExcMessage("boundary id " + std::to_string(id) + " of " + mesh +
@@ -312,6 +320,12 @@ namespace FoslsContact
                                " named in 'Boundary conditions' does not exist "
                                "on " + (mesh_file ? mesh : "this mesh") +
                                " (its boundary ids: " + existing + ")"));
+    MeshParts<dim>::check(
+      tria,
+      [this](const types::boundary_id id) { return is_dirichlet(id); },
+      [this](const types::boundary_id id) { return is_contact(id); },
+      reference.length,
+      mesh_file ? "the " + mesh_file->name() : std::string("the mesh"));
   }
 
 

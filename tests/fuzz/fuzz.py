@@ -1,8 +1,8 @@
 """Fuzz the command line, the scene files and the parameter values of
 fosls-contact.
 
-usage: fuzz.py FOSLS_CONTACT SOURCE_DIR [--cases N] [--mesh-cases M] [--mpi-cases P]
-                [--seed S] [--jobs J]
+usage: fuzz.py FOSLS_CONTACT SOURCE_DIR [--cases N] [--mesh-cases M] [--cause-cases K]
+               [--mpi-cases P] [--seed S] [--jobs J]
 
 Generates N cases (default 600) with a fixed seed (default 1) from the
 scenes in tests/scenes (Geometry/Levels = 2, at most 20 iterations, one
@@ -36,6 +36,18 @@ byte order mark and CRLF line ends. Beyond the failures above, a mesh
 case fails if a corruption that must be refused (all but the truncation)
 runs (exit code other than 1), or if a valid mesh (none, BOM and CRLF) is
 refused (exit code 1).
+
+Then K cause cases (default 60; --cause-cases K, with a random generator
+of their own): hostile inputs of the classes that must be refused naming
+their cause, on the square or the cube (or a small mesh file): a data
+expression (Dirichlet values, traction, gap, body force) that is NaN in
+part of the body, or of a size the dimensionless problem overflows on
+(1e120 to 1e300); a push so small that it underflows (1e-300 to 1e-160);
+a Gmsh physical tag that is negative or above 255; an Abaqus surface whose
+name holds no id, a signed one or two numbers; a mesh with a part apart
+from the rest that only a Neumann boundary or the obstacle holds. A cause
+case fails if it is not refused (exit code 1) in one line that names the
+cause (the parameter, the physical tag, the *SURFACE, the parts).
 
 Then P MPI cases (default 20; --mpi-cases P, a generator of their own):
 two processes started by one mpirun with `-np 1 A : -np 1 B`, where B is
@@ -452,6 +464,90 @@ def make_mesh_case(rng, source):
     return arguments, files, "mesh " + corruption
 
 
+CAUSES = ["data nan", "data huge", "data tiny", "gmsh tag", "abaqus surface", "floating part"]
+DATA = {"Dirichlet values": "Data/Dirichlet values", "Traction": "Data/Traction",
+        "Gap": "Data/Gap", "Body force": "Data/Body force"}
+
+
+def two_blocks_msh(rng, tag, held_by):
+    """A Gmsh 2.2 file of two unit squares side by side, joined (gap 0) or
+    apart; the lower side of the left one has the physical tag 1 (its
+    Dirichlet boundary), the right one's lower side @p held_by (or none), a
+    line of the left one's upper side the physical tag @p tag, the rest 0."""
+    apart = rng.choice([0.5, 2.0, 1e-3])
+    x = [0.0, 1.0, 1.0 + apart, 2.0 + apart]
+    points = [(x[0], 0), (x[1], 0), (x[1], 1), (x[0], 1), (x[2], 0), (x[3], 0), (x[3], 1),
+              (x[2], 1)]
+    lines = [(1, 1, 2), (tag, 3, 4)] + ([(held_by, 5, 6)] if held_by is not None else [])
+    text = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n%d\n" % len(points)
+    text += "".join("%d %r %r 0\n" % (i + 1, p[0], p[1]) for i, p in enumerate(points))
+    text += "$EndNodes\n$Elements\n%d\n" % (len(lines) + 2)
+    text += "".join("%d 1 2 %d 1 %d %d\n" % (k + 1, t, a, b) for k, (t, a, b) in enumerate(lines))
+    text += "%d 3 2 9 1 1 2 3 4\n%d 3 2 9 1 5 6 7 8\n$EndElements\n" % (len(lines) + 1,
+                                                                       len(lines) + 2)
+    return text
+
+
+def make_cause_case(rng, source):
+    """(arguments, {file name: bytes}, kind) of a cause case; kind is 'cause <what the line
+    must name>'."""
+    cause = rng.choice(CAUSES)
+    scene = rng.choice(["square.prm", "cube3d.prm"])
+    dim = 3 if scene == "cube3d.prm" else 2
+    with open(os.path.join(source, "tests/scenes", scene)) as f:
+        files = {"scene.prm": f.read().encode()}
+    arguments = ["scene.prm", "--set", "Geometry/Levels=2", "--set", "Solver/Max iterations=20",
+                 "--set", "Solver/Threads=1", "--set", "Output/Directory=out",
+                 "--set", "Output/Verbose=false"]
+    if cause.startswith("data"):
+        name = rng.choice(list(DATA)) if cause != "data tiny" else "Dirichlet values"
+        n = 1 if name == "Gap" else dim
+        if cause == "data nan":
+            bad = rng.choice(["if(x > 0.5, sqrt(-1), 0)", "if(x > 0.5, 1/(x-x), 0)",
+                              "log(x - 0.75)"])
+        elif cause == "data huge":
+            bad = rng.choice(["1e120", "-1e200", "1e300", "1e150*(1+x)"])
+        else:
+            bad = rng.choice(["-1e-300", "-1e-200", "-1e-170", "-1e-160*(1+x)"])
+        values = ["0"] * n
+        values[rng.randrange(n) if cause != "data tiny" else n - 1] = bad
+        arguments += ["--set", "Data/%s=%s" % (name, "; ".join(values))]
+        if cause == "data tiny":
+            arguments += ["--set", "Data/Traction=" + "; ".join(["0"] * dim),
+                          "--set", "Data/Gap=0"]
+        return arguments, files, "cause " + DATA[name]
+    # (the mesh files are 2D: the square's scene)
+    with open(os.path.join(source, "tests/scenes/square.prm")) as f:
+        files = {"scene.prm": f.read().encode()}
+    arguments += ["--set", "Geometry/Shape=file"]
+    if cause == "abaqus surface":
+        name = rng.choice(["SS-1", "TOP", "S1X2", "SS+3", "SURF-12"])
+        text = ("*HEADING\nfuzz\n*NODE\n1, 0, 0\n2, 1, 0\n3, 1, 1\n4, 0, 1\n"
+                "*ELEMENT, TYPE=CPE4, ELSET=EB1\n1, 1, 2, 3, 4\n"
+                "*SURFACE, NAME=%s, TYPE=ELEMENT\n1, S1\n" % name)
+        files["mesh.inp"] = text.encode()
+        arguments += ["--set", "Geometry/Mesh file=mesh.inp",
+                      "--set", "Boundary conditions/Dirichlet boundary ids=0",
+                      "--set", "Boundary conditions/Neumann boundary ids=",
+                      "--set", "Boundary conditions/Contact boundary ids="]
+        return arguments, files, "cause *SURFACE NAME="
+    if cause == "gmsh tag":
+        tag = rng.choice([-1, -7, 256, 1000, 70000])
+        held_by = 1
+        named = "physical tag %d" % tag
+    else:
+        tag = 0
+        held_by = rng.choice([None, 2])
+        named = "parts that are not connected through faces"
+    files["mesh.msh"] = two_blocks_msh(rng, tag, held_by).encode()
+    arguments += ["--set", "Geometry/Mesh file=mesh.msh",
+                  "--set", "Boundary conditions/Dirichlet boundary ids=1",
+                  "--set", "Boundary conditions/Neumann boundary ids=0",
+                  "--set", "Boundary conditions/Contact boundary ids="
+                  + ("2" if held_by == 2 else "")]
+    return arguments, files, "cause " + named
+
+
 MPI_DIFFERENCES = ["same", "set", "option", "scene"]
 MPI_SETTINGS = ["Geometry/Levels=1", "Solver/Type=active set", "Output/Directory=other",
                 "Adaptivity/Steps=1", "Geometry/Dimension=3", "Solver/Cycle=V"]
@@ -526,6 +622,10 @@ def run_case(number, arguments, files, kind):
         if kind == "mpi same" and rc not in (0, 2):
             return number, "same inputs refused", command, repr(err[:300])
     after = listing(directory)
+    if kind.startswith("cause ") and rc >= 0:
+        one = err.decode(errors="replace").strip()
+        if rc != 1 or "\n" in one or kind[6:] not in one:
+            return number, "cause not named", command, "exit code %d: %r" % (rc, err[:300])
     if kind.startswith("mesh ") and rc >= 0:
         valid = kind[5:] in MESH_VALID
         if valid and rc == 1:
@@ -568,8 +668,8 @@ def run_case(number, arguments, files, kind):
 def main():
     global EXE
     arguments = sys.argv[1:]
-    options = {"--cases": "600", "--mesh-cases": "150", "--mpi-cases": "20", "--seed": "1",
-               "--jobs": "2"}
+    options = {"--cases": "600", "--mesh-cases": "150", "--cause-cases": "60",
+               "--mpi-cases": "20", "--seed": "1", "--jobs": "2"}
     while len(arguments) > 2:
         value = arguments.pop()
         options[arguments.pop()] = value
@@ -579,19 +679,22 @@ def main():
     cases = [make_case(rng, n, source, entries) for n in range(int(options["--cases"]))]
     mesh_rng = random.Random(int(options["--seed"]) + 1000)
     cases += [make_mesh_case(mesh_rng, source) for n in range(int(options["--mesh-cases"]))]
-    mpi_rng = random.Random(int(options["--seed"]) + 2000)
+    cause_rng = random.Random(int(options["--seed"]) + 2000)
+    cases += [make_cause_case(cause_rng, source) for n in range(int(options["--cause-cases"]))]
+    mpi_rng = random.Random(int(options["--seed"]) + 3000)
     cases += [make_mpi_case(mpi_rng, source) for n in range(int(options["--mpi-cases"]))]
     failures = {k: [] for k in ["crash", "hang", "exit code", "error line",
                                 "files after an error", "output", "bad mesh accepted",
-                                "good mesh refused", "different inputs run",
-                                "same inputs refused"]}
+                                "good mesh refused", "cause not named",
+                                "different inputs run", "same inputs refused"]}
     with concurrent.futures.ThreadPoolExecutor(int(options["--jobs"])) as pool:
         for number, failure, command, detail in pool.map(lambda c: run_case(c[0], *c[1]),
                                                          enumerate(cases)):
             if failure:
                 failures[failure].append((number, command, detail))
-    print("cases: %d (seed %s), of them mesh cases: %s, MPI cases: %s"
-          % (len(cases), options["--seed"], options["--mesh-cases"], options["--mpi-cases"]))
+    print("cases: %d (seed %s), of them mesh cases: %s, cause cases: %s, MPI cases: %s"
+          % (len(cases), options["--seed"], options["--mesh-cases"], options["--cause-cases"],
+             options["--mpi-cases"]))
     for kind, found in failures.items():
         print("%s: %d" % (kind, len(found)))
     for kind, found in failures.items():

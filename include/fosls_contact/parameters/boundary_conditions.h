@@ -24,6 +24,14 @@ namespace FoslsContact
      */
     struct BoundaryConditions
     {
+      /**
+       * The largest boundary id the parameters accept: the ids of the box
+       * and the curved bodies are 0 to 4, and a mesh file's ids are its
+       * physical groups or surfaces, which a scene numbers from 0. (deal.II
+       * itself takes ids to 2^32 - 2.)
+       */
+      static constexpr unsigned int max_id = 255;
+
       std::vector<unsigned int> dirichlet_ids;
       /// per Dirichlet id: which components are prescribed (size dim);
       /// filled by parse_components(), once the dimension is known

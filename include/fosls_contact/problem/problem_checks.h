@@ -33,7 +33,11 @@ namespace FoslsContact
                   const ConstrainedQP &            qp,
                   const ConditionalOStream &       pcout);
 
-    /** Refuse data (Dirichlet values, traction, gap, body force) that are not finite. */
+    /**
+     * Refuse data (Dirichlet values, traction, gap, body force) that are
+     * not finite, or too large or too small for double precision
+     * (DataCheck).
+     */
     void check_data() const;
     /**
      * Refuse boundary conditions that leave a rigid motion free: the

@@ -8,6 +8,7 @@
 #include <fosls_contact/solvers/qp_solver.h>
 
 #include <memory>
+#include <string>
 
 namespace FoslsContact
 {
@@ -21,6 +22,24 @@ namespace FoslsContact
   {
     /** The name of @p type in the input file, for the output. */
     static const char *name(const Parameters::Solver::Type type);
+
+    /**
+     * A one-line warning that Solver/Type = active set will take long on
+     * @p n_dofs DoFs, or "". Its sparse direct solves grow much faster than
+     * the DoFs (the fill-in of the factors), the more so in 3D, and the
+     * solve says nothing before it ends: measured on 2 busy cores with the
+     * square and the cube (2 active set iterations each), 2D: 3.1 s for
+     * 25,090 DoFs and 31.6 s for 99,330 (like N^1.7); 3D: 0.13 s for 1,095
+     * and 12.9 s for 7,371 (like N^2.4), so that the cube's 53,000 DoFs of
+     * level 5 take many minutes (432 s measured). The warning comes above
+     * warning_dofs(), where an iteration takes about 10 s, with the time
+     * per iteration these measurements predict.
+     */
+    static std::string active_set_warning(const Parameters::Solver::Type type,
+                                          const types::global_dof_index  n_dofs);
+
+    /** The DoFs above which active_set_warning() warns: 2D 75,000, 3D 9,000. */
+    static constexpr types::global_dof_index warning_dofs = dim == 2 ? 75000 : 9000;
 
     /** A solver for @p level_qp, the problem assembled on level @p level. */
     static std::unique_ptr<QPSolver> make(const Parameters::Solver &  parameters,

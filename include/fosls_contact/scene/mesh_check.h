@@ -30,7 +30,10 @@ namespace FoslsContact
    * against the lines that are there, every coordinate a finite double,
    * every node a cell names present in the file, the number of nodes of
    * every element of the types the program reads (lines, triangles,
-   * quadrilaterals, tetrahedra, hexahedra, points). Then, if the file
+   * quadrilaterals, tetrahedra, hexahedra, points), every physical tag
+   * (Gmsh) or material (AVS UCD) a number from 0, and at most the largest
+   * boundary id 'Boundary conditions' accepts where it is the id of a
+   * boundary face (deal.II's Gmsh reader takes -1 as id 0). Then, if the file
    * holds cells of the scene's dimension that are all quadrilaterals (2D)
    * or hexahedra (3D), the mesh:
    *  - in 2D, every node of a cell at z = 0;
@@ -101,6 +104,24 @@ namespace FoslsContact
     std::string read_vtk(const std::vector<std::string> &lines);
     std::string read_ucd(const std::vector<std::string> &lines);
     std::string read_abaqus(const std::vector<std::string> &lines);
+
+    /**
+     * The physical tags of a Gmsh 4 file's $Entities section, which become
+     * the boundary ids of the faces (and the material ids of the cells) of
+     * each entity: "" or why one is no id the program can take.
+     */
+    std::string read_gmsh_entities(const std::vector<std::string> &lines, const int version) const;
+
+    /**
+     * "" or why the physical tag @p tag of an element (or entity) of
+     * dimension @p element_dim is no id the program can take: negative (a
+     * boundary id is a number from 0), or, on a boundary face, above the
+     * ids 'Boundary conditions' accepts. @p what names the element and the
+     * tag's kind ("line 9: element 3 has the physical tag").
+     */
+    std::string physical_tag_problem(const long         tag,
+                                     const unsigned int element_dim,
+                                     const std::string &what) const;
 
     /**
      * Add the node labelled @p label at @p line with the coordinate tokens

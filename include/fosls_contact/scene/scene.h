@@ -68,10 +68,10 @@ namespace FoslsContact
     }
 
     /** @{ The data at dimensionless points, dimensionless. */
-    const Function<dim> &body_force() const { return *body_force_scaled; }
-    const Function<dim> &dirichlet_values() const { return *dirichlet_scaled; }
-    const Function<dim> &traction() const { return *traction_scaled; }
-    const Function<dim> &gap() const { return *gap_scaled; }
+    const ScaledFunction<dim> &body_force() const { return *body_force_scaled; }
+    const ScaledFunction<dim> &dirichlet_values() const { return *dirichlet_scaled; }
+    const ScaledFunction<dim> &traction() const { return *traction_scaled; }
+    const ScaledFunction<dim> &gap() const { return *gap_scaled; }
     /** The unit obstacle normal at the dimensionless point @p p. */
     Tensor<1, dim> obstacle_normal(const Point<dim> &p) const;
     /** Initial displacement expression, or null. */

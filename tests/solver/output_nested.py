@@ -2,9 +2,9 @@
 # Output/Directory: the later one is refused at once (exit code 1, one line
 # naming Output/Directory and the other run's directory), the earlier one
 # ends normally with its files; both orders (the inner run first, the
-# outer run first). (Found by probing: a run into out/sub while a run
-# into out was running ended with exit code 0, and out/sub did not exist
-# afterwards: the outer run's publication replaced out.) The running run
+# outer run first). (Without the check a run into out/sub while a run into
+# out runs ends with exit code 0, and the outer run's publication, which
+# replaces out, takes out/sub with it.) The running run
 # (the square on 6 levels) is stopped with SIGSTOP as soon as it prints its
 # scene, after it locked its directory, and continued after the other run
 # ended, so the test does not depend on timing. Runs one after the other

@@ -411,7 +411,8 @@ namespace FoslsContact
       ", \"peak_pressure\": " + number(zone.peak_pressure()) +
       ", \"peak_position\": " + json_array(peak_position) +
       ", \"vertices_in_contact\": " + std::to_string(zone.vertices_in_contact()) +
-      ", \"contact_vertices\": " + std::to_string(zone.vertices()) + "}";
+      ", \"contact_vertices\": " + std::to_string(zone.vertices()) +
+      ", \"resolved\": " + (zone.resolved() ? "true" : "false") + "}";
     pcout << "Contact zone: " << measure << ' ' << std::setprecision(6) << zone.measure()
           << suffix(units.contact_measure(dim)) << " (" << zone.vertices_in_contact() << " of "
           << zone.vertices() << " contact vertices in contact), mean pressure "
@@ -425,6 +426,12 @@ namespace FoslsContact
                   zone.peak_position()[d]);
     pcout << ')' << suffix(units.length) << std::defaultfloat << std::setprecision(precision)
           << std::endl;
+    if (!zone.resolved())
+      pcout << "Warning: only " << zone.vertices_in_contact()
+            << " contact vertices are in contact: the mesh does not resolve the contact zone "
+               "(its measure, pressures and force are those of so few vertices, and a zone "
+               "that touches a single vertex carries no force); refine the mesh where the body touches"
+            << std::endl;
   }
 
 

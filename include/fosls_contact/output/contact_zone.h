@@ -53,6 +53,19 @@ namespace FoslsContact
     unsigned int vertices_in_contact() const { return n_in_contact; }
     /** The number of contact vertices. */
     unsigned int vertices() const { return n_vertices; }
+    /**
+     * Whether the mesh resolves the zone: no vertex in contact, or at
+     * least 3 in 2D (two faces) and 5 in 3D (a vertex and its four
+     * neighbours on a quadrilateral surface mesh). A zone of fewer is
+     * decided by single vertices: an obstacle touching one vertex of the
+     * square's bottom gives u.n = g there and a contact force of exactly 0
+     * (one vertex carries no traction of its own: RT0's tractions live on
+     * faces), and a finer mesh changes the figures by their whole size.
+     */
+    bool resolved() const
+    {
+      return n_in_contact == 0 || n_in_contact >= (dim == 2 ? 3u : 5u);
+    }
 
   private:
     double       zone_measure = 0, mean = 0, peak = 0;

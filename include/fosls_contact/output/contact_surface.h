@@ -24,7 +24,8 @@ namespace FoslsContact
    * pressure are made of, while the face values are what integrates to
    * the contact force exactly (the vertex means smear the zone's edge by
    * a face: on the steel cylinder's 2-level mesh their integral is 40%
-   * off the force, on the 5-level square 8e-9). A surface of its own,
+   * off the force, on the 5-level square less than 1e-3: solver/
+   * output_fields). A surface of its own,
    * because these quantities live on the boundary only.
    */
   template <int dim>

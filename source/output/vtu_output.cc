@@ -74,25 +74,20 @@ namespace FoslsContact
       if (cell->is_locally_owned())
         eta[cell->active_cell_index()] =
           std::sqrt(std::max(0., unit * indicators.squared(cell->active_cell_index())));
-    {
-      const auto &                 level = discretization.level(discretization.finest_level());
-      std::map<unsigned int, bool> active_vertex;
-      // (x's ghost values: from ContactTable::csv() before; read through
-      // LocalElements)
-      const LocalElements x_local(x);
-      for (const auto &cv : level.contact_vertices)
-        active_vertex[cv.vertex_index] =
-          ContactTable<dim>::in_contact(x_local(cv.normal_dof), cv.gap);
-      for (const auto &cell : tria.active_cell_iterators())
-        if (cell->is_locally_owned())
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              const auto it = active_vertex.find(cell->vertex_index(v));
-              if (it != active_vertex.end())
-                status[cell->active_cell_index()] =
-                  std::max<float>(status[cell->active_cell_index()], it->second ? 2.f : 1.f);
-            }
-    }
+    // (the rows of contact.csv at this process's contact vertices: one
+    // decision of which vertex is in contact for the cells' status and
+    // the contact surface)
+    const auto rows = ContactTable<dim>(discretization).local_rows(x);
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const auto it = rows.find(cell->vertex_index(v));
+            if (it != rows.end())
+              status[cell->active_cell_index()] =
+                std::max<float>(status[cell->active_cell_index()],
+                                it->second[ContactRow<dim>::in_contact] == 1 ? 2.f : 1.f);
+          }
     data_out.add_data_vector(eta, "error_indicator", DataOut<dim>::type_cell_data);
     data_out.add_data_vector(status, "contact_status", DataOut<dim>::type_cell_data);
 
@@ -139,8 +134,7 @@ namespace FoslsContact
 
     if (scene.has_contact())
       {
-        ContactSurface<dim> surface(scene);
-        const auto          rows = ContactTable<dim>(discretization).local_rows(x);
+        ContactSurface<dim>                  surface(scene);
         typename ContactSurface<dim>::Fields fields(scene, rows);
         surface.attach_dof_handler(discretization.get_dof_handler());
         surface.add_data_vector(solution, fields);

@@ -9,7 +9,7 @@
  *
  * main() reads the command line and the scene (CommandLine,
  * ParameterReader) and hands the parameters to FoslsProblem. Exit codes
- * (CommandLine::ExitCode): 0 converged, 1 error (one line on stderr, no
+ * (ExitCode): 0 converged, 1 error (one line on stderr, no
  * output files), 2 not converged (files written, one line on stderr), 3 an
  * error on some of several processes that the others did not learn of
  * (one line, MPI_Abort, ErrorLine::stop): the program decides the errors
@@ -21,14 +21,14 @@
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <fosls_contact/fosls_problem.h>
+#include <fosls_contact/base/collective_error.h>
+#include <fosls_contact/base/error_line.h>
+#include <fosls_contact/base/interruption.h>
 #include <fosls_contact/input/command_line.h>
 #include <fosls_contact/input/parameter_reader.h>
 #include <fosls_contact/input/same_input.h>
-#include <fosls_contact/output/collective_error.h>
-#include <fosls_contact/output/error_line.h>
-#include <fosls_contact/output/interruption.h>
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
+#include <fosls_contact/problem/fosls_problem.h>
 
 #include <muParser.h>
 
@@ -97,7 +97,7 @@ main(int argc, char *argv[])
   MPI_Comm_dup(MPI_COMM_WORLD, &error_comm);
   const bool  first_rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   std::string where      = "command line";
-  int         status     = CommandLine::success;
+  int         status     = ExitCode::success;
   try
     {
       dealii::ParameterHandler prm;
@@ -176,7 +176,7 @@ main(int argc, char *argv[])
                     ErrorLine::print("fosls-contact: " + not_converged +
                                      "; the output files are written, summary.json has "
                                      "\"converged\": false");
-                  status = CommandLine::not_converged;
+                  status = ExitCode::not_converged;
                 }
             }
         }
@@ -188,7 +188,7 @@ main(int argc, char *argv[])
       if (first_rank)
         ErrorLine::print("fosls-contact: " + ErrorLine::one_line(exc.what()));
       MPI_Comm_free(&error_comm);
-      return CommandLine::interrupted;
+      return ExitCode::interrupted;
     }
   catch (const InputError &exc)
     {

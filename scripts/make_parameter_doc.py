@@ -11,7 +11,7 @@ subsection with every parameter, its default, its valid values (from the
 pattern description) and its documentation.
 
 Sections and parameters are listed in the order in which the sources
-declare them: AllParameters::declare_parameters (source/parameters.cc)
+declare them: AllParameters::declare_parameters (source/parameters/parameters.cc)
 calls the subsections' declare_parameters, each in its own
 source/parameters/<subsection>.cc (anything not found there follows in
 alphabetical order). With --check, nothing is written and the exit code is 1
@@ -36,7 +36,7 @@ def declaration_sources(aggregate):
         return []
     calls = re.findall(r'\b(\w+)::declare_parameters\(prm\)', aggregate.read_text())
     snake = [re.sub(r'(?<!^)([A-Z])', r'_\1', name).lower() for name in calls]
-    return [aggregate.parent / "parameters" / f"{name}.cc" for name in snake]
+    return [aggregate.parent / f"{name}.cc" for name in snake]
 
 
 def declaration_order(sources):
@@ -235,7 +235,7 @@ def main():
         sys.exit(f"make_parameter_doc.py: output of --print-parameters is "
                  f"not JSON ({e})")
 
-    text = render(tree, declaration_sources(ROOT / "source" / "parameters.cc"))
+    text = render(tree, declaration_sources(ROOT / "source" / "parameters" / "parameters.cc"))
     output = Path(args.output)
     if args.check:
         current = output.read_text() if output.is_file() else None

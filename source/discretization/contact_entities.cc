@@ -1,6 +1,6 @@
+#include <fosls_contact/base/collective_error.h>
 #include <fosls_contact/discretization/contact_entities.h>
 #include <fosls_contact/discretization/normal_tangential_basis.h>
-#include <fosls_contact/output/collective_error.h>
 
 #include <iomanip>
 #include <sstream>

@@ -8,6 +8,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <fosls_contact/base/collective_error.h>
 #include <fosls_contact/discretization/boundary_face_conditions.h>
 #include <fosls_contact/discretization/contact_entities.h>
 #include <fosls_contact/discretization/discretization.h>
@@ -16,7 +17,6 @@
 #include <fosls_contact/discretization/refinement_marking.h>
 #include <fosls_contact/discretization/refinement_transfer.h>
 #include <fosls_contact/discretization/replicated_triangulation.h>
-#include <fosls_contact/output/collective_error.h>
 
 #include <algorithm>
 #include <array>

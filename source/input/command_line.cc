@@ -1,6 +1,6 @@
-#include <fosls_contact/build_info.h>
+#include <fosls_contact/base/build_info.h>
+#include <fosls_contact/base/error_line.h>
 #include <fosls_contact/input/command_line.h>
-#include <fosls_contact/output/error_line.h>
 
 namespace FoslsContact
 {

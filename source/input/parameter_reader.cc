@@ -1,9 +1,9 @@
 #include <deal.II/base/utilities.h>
 
+#include <fosls_contact/base/error_line.h>
 #include <fosls_contact/input/parameter_reader.h>
 #include <fosls_contact/input/pattern_description.h>
 #include <fosls_contact/input/text_file.h>
-#include <fosls_contact/output/error_line.h>
 
 #include <boost/algorithm/string/case_conv.hpp>
 #include <boost/property_tree/json_parser.hpp>

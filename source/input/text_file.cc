@@ -1,6 +1,6 @@
-#include <fosls_contact/input/input_error.h>
+#include <fosls_contact/base/error_line.h>
+#include <fosls_contact/base/input_error.h>
 #include <fosls_contact/input/text_file.h>
-#include <fosls_contact/output/error_line.h>
 
 #include <fcntl.h>
 #include <sys/stat.h>

@@ -1,6 +1,6 @@
+#include <fosls_contact/base/error_line.h>
+#include <fosls_contact/base/file_system.h>
 #include <fosls_contact/output/directory_swap.h>
-#include <fosls_contact/output/error_line.h>
-#include <fosls_contact/output/file_system.h>
 #include <fosls_contact/output/output_directory.h>
 
 #include <fcntl.h>

@@ -1,7 +1,7 @@
 #include <deal.II/base/numbers.h>
 
+#include <fosls_contact/base/json.h>
 #include <fosls_contact/output/hertz_comparison.h>
-#include <fosls_contact/output/json.h>
 
 #include <cmath>
 #include <iomanip>

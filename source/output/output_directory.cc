@@ -1,9 +1,9 @@
 #include <deal.II/base/mpi.h>
 
-#include <fosls_contact/output/collective_error.h>
+#include <fosls_contact/base/collective_error.h>
+#include <fosls_contact/base/error_line.h>
+#include <fosls_contact/base/file_system.h>
 #include <fosls_contact/output/directory_swap.h>
-#include <fosls_contact/output/error_line.h>
-#include <fosls_contact/output/file_system.h>
 #include <fosls_contact/output/output_directory.h>
 
 #include <fcntl.h>

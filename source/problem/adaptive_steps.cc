@@ -1,4 +1,4 @@
-#include <fosls_contact/output/json.h>
+#include <fosls_contact/base/json.h>
 #include <fosls_contact/problem/adaptive_steps.h>
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include <deal.II/base/utilities.h>
 
-#include <fosls_contact/output/error_line.h>
+#include <fosls_contact/base/error_line.h>
 #include <fosls_contact/problem/data_check.h>
 
 #include <cmath>

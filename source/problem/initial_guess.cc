@@ -1,10 +1,10 @@
 #include <deal.II/base/mpi.h>
 
 #include <fosls_contact/assembly/fosls_assembler.h>
-#include <fosls_contact/output/monitor.h>
 #include <fosls_contact/problem/initial_guess.h>
 #include <fosls_contact/problem/solver_choice.h>
 #include <fosls_contact/solvers/active_set_direct.h>
+#include <fosls_contact/solvers/monitor.h>
 
 #include <iomanip>
 

@@ -1,8 +1,8 @@
 #include <deal.II/base/mpi.h>
 
 #include <fosls_contact/assembly/fosls_assembler.h>
-#include <fosls_contact/output/collective_error.h>
-#include <fosls_contact/output/json.h>
+#include <fosls_contact/base/collective_error.h>
+#include <fosls_contact/base/json.h>
 #include <fosls_contact/problem/data_check.h>
 #include <fosls_contact/problem/problem_checks.h>
 #include <fosls_contact/qp/definiteness_check.h>

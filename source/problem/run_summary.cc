@@ -1,11 +1,11 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <fosls_contact/build_info.h>
+#include <fosls_contact/base/build_info.h>
+#include <fosls_contact/base/json.h>
 #include <fosls_contact/output/contact_table.h>
 #include <fosls_contact/output/contact_zone.h>
 #include <fosls_contact/output/hertz_comparison.h>
-#include <fosls_contact/output/json.h>
 #include <fosls_contact/problem/run_summary.h>
 #include <fosls_contact/problem/solver_choice.h>
 

@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi.templates.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
-#include <fosls_contact/output/collective_error.h>
+#include <fosls_contact/base/collective_error.h>
 #include <fosls_contact/qp/gathered_qp.h>
 
 #include <cstring>

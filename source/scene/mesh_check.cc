@@ -1,4 +1,4 @@
-#include <fosls_contact/output/error_line.h>
+#include <fosls_contact/base/error_line.h>
 #include <fosls_contact/parameters/boundary_conditions.h>
 #include <fosls_contact/scene/mesh_check.h>
 

@@ -1,9 +1,9 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 
-#include <fosls_contact/input/input_error.h>
+#include <fosls_contact/base/error_line.h>
+#include <fosls_contact/base/input_error.h>
 #include <fosls_contact/input/text_file.h>
-#include <fosls_contact/output/error_line.h>
 #include <fosls_contact/scene/mesh_check.h>
 #include <fosls_contact/scene/mesh_file.h>
 

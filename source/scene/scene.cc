@@ -2,7 +2,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
-#include <fosls_contact/output/collective_error.h>
+#include <fosls_contact/base/collective_error.h>
 #include <fosls_contact/scene/boundary_manifolds.h>
 #include <fosls_contact/scene/cell_shape_check.h>
 #include <fosls_contact/scene/curved_body.h>

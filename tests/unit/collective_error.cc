@@ -1,4 +1,4 @@
-// CollectiveError (output/collective_error.h), run on 2 MPI processes: an
+// CollectiveError (base/collective_error.h), run on 2 MPI processes: an
 // error that some processes meet in their own work stops every process
 // with the error of the first (lowest rank) that failed, and a run where
 // none failed goes on on every process:
@@ -16,9 +16,9 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
-#include <fosls_contact/input/input_error.h>
-#include <fosls_contact/output/collective_error.h>
-#include <fosls_contact/output/error_line.h>
+#include <fosls_contact/base/collective_error.h>
+#include <fosls_contact/base/error_line.h>
+#include <fosls_contact/base/input_error.h>
 
 #include <stdexcept>
 #include <string>

@@ -11,9 +11,9 @@
 #include <deal.II/base/mpi.h>
 
 #include <fosls_contact/assembly/fosls_assembler.h>
-#include <fosls_contact/output/monitor.h>
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/solvers/active_set_direct.h>
+#include <fosls_contact/solvers/monitor.h>
 
 #include "tests.h"
 

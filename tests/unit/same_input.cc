@@ -12,7 +12,7 @@
 // process.
 #include <deal.II/base/mpi.h>
 
-#include <fosls_contact/input/input_error.h>
+#include <fosls_contact/base/input_error.h>
 #include <fosls_contact/input/same_input.h>
 
 #include <string>

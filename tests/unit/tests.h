@@ -8,7 +8,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 
 #include <cmath>
 #include <cstdint>

@@ -4,7 +4,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <fosls_contact/discretization/discretization.h>
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 
 namespace FoslsContact
 {

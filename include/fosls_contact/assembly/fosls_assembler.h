@@ -4,7 +4,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <fosls_contact/discretization/discretization.h>
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
 
 #include <functional>

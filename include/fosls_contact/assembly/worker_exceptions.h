@@ -1,7 +1,7 @@
 #ifndef fosls_contact_assembly_worker_exceptions_h
 #define fosls_contact_assembly_worker_exceptions_h
 
-#include <fosls_contact/output/collective_error.h>
+#include <fosls_contact/base/collective_error.h>
 
 #include <mpi.h>
 

@@ -3,8 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <fosls_contact/base/input_error.h>
 #include <fosls_contact/input/declared_parameters.h>
-#include <fosls_contact/input/input_error.h>
 
 #include <string>
 #include <vector>

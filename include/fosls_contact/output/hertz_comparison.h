@@ -4,7 +4,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <fosls_contact/output/contact_table.h>
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 
 #include <array>
 #include <string>

@@ -3,12 +3,12 @@
 
 #include <fosls_contact/assembly/error_indicators.h>
 #include <fosls_contact/discretization/discretization.h>
-#include <fosls_contact/output/monitor.h>
 #include <fosls_contact/output/output_directory.h>
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/scene/physical_mapping.h>
 #include <fosls_contact/scene/scaling.h>
+#include <fosls_contact/solvers/monitor.h>
 
 #include <map>
 #include <string>

@@ -3,7 +3,7 @@
 
 #include <deal.II/numerics/data_postprocessor.h>
 
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/scene/scene.h>
 
 namespace FoslsContact

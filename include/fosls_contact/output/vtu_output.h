@@ -4,7 +4,7 @@
 #include <fosls_contact/assembly/error_indicators.h>
 #include <fosls_contact/discretization/discretization.h>
 #include <fosls_contact/output/output_directory.h>
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/scene/physical_mapping.h>
 
 #include <string>

@@ -3,7 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/scene/scene.h>
 
 #include <string>

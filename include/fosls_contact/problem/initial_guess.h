@@ -5,7 +5,7 @@
 
 #include <fosls_contact/discretization/discretization.h>
 #include <fosls_contact/discretization/level_transfer.h>
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/scene/scene.h>
 

@@ -5,7 +5,7 @@
 #include <deal.II/base/timer.h>
 
 #include <fosls_contact/discretization/discretization.h>
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/qp/definiteness_check.h>
 #include <fosls_contact/scene/scene.h>

@@ -6,11 +6,11 @@
 
 #include <fosls_contact/assembly/error_indicators.h>
 #include <fosls_contact/discretization/discretization.h>
-#include <fosls_contact/output/monitor.h>
 #include <fosls_contact/output/postprocessor.h>
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/scene/scene.h>
+#include <fosls_contact/solvers/monitor.h>
 #include <fosls_contact/solvers/qp_solver.h>
 
 #include <map>

@@ -3,7 +3,7 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 
 #include <string>
 #include <vector>

@@ -5,7 +5,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/grid/tria.h>
 
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/scene/mesh_file.h>
 #include <fosls_contact/scene/scaled_function.h>
 #include <fosls_contact/scene/scaling.h>

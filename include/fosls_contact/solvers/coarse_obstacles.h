@@ -1,7 +1,7 @@
 #ifndef fosls_contact_solvers_coarse_obstacles_h
 #define fosls_contact_solvers_coarse_obstacles_h
 
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/qp/level_algebra.h>
 #include <fosls_contact/solvers/multilevel_hierarchy.h>
 

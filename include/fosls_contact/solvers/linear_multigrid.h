@@ -4,7 +4,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/multigrid/multigrid.h>
 
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/qp/dof_role.h>
 #include <fosls_contact/qp/level_algebra.h>
 #include <fosls_contact/solvers/coarse_solver.h>

@@ -3,7 +3,7 @@
 
 #include <deal.II/lac/sparse_matrix.h>
 
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/solvers/coarse_solver.h>
 #include <fosls_contact/solvers/level_operators.h>
 #include <fosls_contact/solvers/level_truncation.h>

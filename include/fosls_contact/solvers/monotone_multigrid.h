@@ -4,7 +4,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 
 #include <fosls_contact/discretization/level_transfer.h>
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/solvers/coarse_solver.h>
 #include <fosls_contact/solvers/flux_rerouting.h>
 #include <fosls_contact/solvers/level_operators.h>

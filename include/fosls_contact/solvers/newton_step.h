@@ -1,7 +1,7 @@
 #ifndef fosls_contact_solvers_newton_step_h
 #define fosls_contact_solvers_newton_step_h
 
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/solvers/linear_multigrid.h>
 #include <fosls_contact/solvers/monotone_cycle.h>

@@ -1,6 +1,6 @@
 #include <deal.II/base/mpi.h>
 
-#include <fosls_contact/output/interruption.h>
+#include <fosls_contact/base/interruption.h>
 
 #include <csignal>
 

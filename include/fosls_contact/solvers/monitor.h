@@ -1,14 +1,14 @@
-#ifndef fosls_contact_output_monitor_h
-#define fosls_contact_output_monitor_h
+#ifndef fosls_contact_solvers_monitor_h
+#define fosls_contact_solvers_monitor_h
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
-#include <fosls_contact/parameters.h>
-#include <fosls_contact/output/iteration_record.h>
-#include <fosls_contact/output/stopping_rules.h>
+#include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/solvers/iteration_observer.h>
+#include <fosls_contact/solvers/iteration_record.h>
+#include <fosls_contact/solvers/stopping_rules.h>
 
 #include <string>
 #include <vector>

@@ -1,10 +1,10 @@
-#ifndef fosls_contact_output_collective_error_h
-#define fosls_contact_output_collective_error_h
+#ifndef fosls_contact_base_collective_error_h
+#define fosls_contact_base_collective_error_h
 
 #include <deal.II/base/mpi.h>
 
-#include <fosls_contact/input/input_error.h>
-#include <fosls_contact/output/error_line.h>
+#include <fosls_contact/base/error_line.h>
+#include <fosls_contact/base/input_error.h>
 
 #include <mpi.h>
 

@@ -1,5 +1,5 @@
-#include <fosls_contact/output/interruption.h>
-#include <fosls_contact/output/monitor.h>
+#include <fosls_contact/base/interruption.h>
+#include <fosls_contact/solvers/monitor.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include <deal.II/base/config.h>
 
-#include <fosls_contact/build_info.h>
+#include <fosls_contact/base/build_info.h>
 
 #include <fosls_contact_git_revision.h>
 

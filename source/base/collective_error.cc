@@ -1,7 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
-#include <fosls_contact/output/collective_error.h>
+#include <fosls_contact/base/collective_error.h>
 
 namespace FoslsContact
 {

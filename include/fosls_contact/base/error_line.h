@@ -1,5 +1,5 @@
-#ifndef fosls_contact_output_error_line_h
-#define fosls_contact_output_error_line_h
+#ifndef fosls_contact_base_error_line_h
+#define fosls_contact_base_error_line_h
 
 #include <mpi.h>
 
@@ -48,7 +48,7 @@ namespace FoslsContact
      * every process meets: bad input), the first prints the line; if some
      * did not come within 10 s (an error of one process, the others wait
      * in a collective operation), this one prints its line and aborts the
-     * run with exit code 3 (CommandLine::error_on_some_processes; the
+     * run with exit code 3 (ExitCode::error_on_some_processes; the
      * program decides the errors it expects on all processes,
      * CollectiveError).
      */

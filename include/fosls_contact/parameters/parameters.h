@@ -1,17 +1,17 @@
-#ifndef fosls_contact_parameters_h
-#define fosls_contact_parameters_h
+#ifndef fosls_contact_parameters_parameters_h
+#define fosls_contact_parameters_parameters_h
 
-#include <fosls_contact/parameters/geometry.h>
-#include <fosls_contact/parameters/material.h>
-#include <fosls_contact/parameters/scaling.h>
-#include <fosls_contact/parameters/weights.h>
-#include <fosls_contact/parameters/data.h>
-#include <fosls_contact/parameters/boundary_conditions.h>
-#include <fosls_contact/parameters/solver.h>
-#include <fosls_contact/parameters/output.h>
-#include <fosls_contact/parameters/hertz_comparison.h>
 #include <fosls_contact/parameters/adaptivity.h>
+#include <fosls_contact/parameters/boundary_conditions.h>
+#include <fosls_contact/parameters/data.h>
+#include <fosls_contact/parameters/geometry.h>
+#include <fosls_contact/parameters/hertz_comparison.h>
+#include <fosls_contact/parameters/material.h>
+#include <fosls_contact/parameters/output.h>
+#include <fosls_contact/parameters/scaling.h>
+#include <fosls_contact/parameters/solver.h>
 #include <fosls_contact/parameters/value_parsing.h>
+#include <fosls_contact/parameters/weights.h>
 
 namespace FoslsContact
 {

@@ -1,5 +1,5 @@
-#ifndef fosls_contact_output_interruption_h
-#define fosls_contact_output_interruption_h
+#ifndef fosls_contact_base_interruption_h
+#define fosls_contact_base_interruption_h
 
 #include <mpi.h>
 
@@ -36,7 +36,7 @@ namespace FoslsContact
   /**
    * The run stopped on Interruption::requested(): thrown on every process
    * at once, after the finished steps were published; what() says what
-   * was kept. main() exits with CommandLine::interrupted.
+   * was kept. main() exits with ExitCode::interrupted.
    */
   class InterruptedRun : public std::runtime_error
   {

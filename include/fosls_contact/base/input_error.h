@@ -1,5 +1,5 @@
-#ifndef fosls_contact_input_input_error_h
-#define fosls_contact_input_input_error_h
+#ifndef fosls_contact_base_input_error_h
+#define fosls_contact_base_input_error_h
 
 #include <stdexcept>
 #include <string>

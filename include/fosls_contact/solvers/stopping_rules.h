@@ -1,8 +1,8 @@
-#ifndef fosls_contact_output_stopping_rules_h
-#define fosls_contact_output_stopping_rules_h
+#ifndef fosls_contact_solvers_stopping_rules_h
+#define fosls_contact_solvers_stopping_rules_h
 
-#include <fosls_contact/output/iteration_record.h>
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
+#include <fosls_contact/solvers/iteration_record.h>
 
 #include <vector>
 

@@ -1,5 +1,5 @@
-#ifndef fosls_contact_fosls_problem_h
-#define fosls_contact_fosls_problem_h
+#ifndef fosls_contact_problem_fosls_problem_h
+#define fosls_contact_problem_fosls_problem_h
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -7,14 +7,14 @@
 #include <fosls_contact/assembly/error_indicators.h>
 #include <fosls_contact/discretization/discretization.h>
 #include <fosls_contact/discretization/level_transfer.h>
-#include <fosls_contact/output/monitor.h>
 #include <fosls_contact/output/output_directory.h>
 #include <fosls_contact/output/postprocessor.h>
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/problem/adaptive_steps.h>
 #include <fosls_contact/problem/run_summary.h>
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/scene/scene.h>
+#include <fosls_contact/solvers/monitor.h>
 #include <fosls_contact/solvers/qp_solver.h>
 
 #include <map>

@@ -1,5 +1,5 @@
-#ifndef fosls_contact_output_iteration_record_h
-#define fosls_contact_output_iteration_record_h
+#ifndef fosls_contact_solvers_iteration_record_h
+#define fosls_contact_solvers_iteration_record_h
 
 #include <fosls_contact/qp/constrained_qp.h>
 

@@ -1,5 +1,5 @@
-#ifndef fosls_contact_build_info_h
-#define fosls_contact_build_info_h
+#ifndef fosls_contact_base_build_info_h
+#define fosls_contact_base_build_info_h
 
 #include <string>
 

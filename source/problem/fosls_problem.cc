@@ -4,10 +4,10 @@
 
 #include <fosls_contact/assembly/error_indicators.h>
 #include <fosls_contact/assembly/fosls_assembler.h>
-#include <fosls_contact/fosls_problem.h>
-#include <fosls_contact/output/interruption.h>
-#include <fosls_contact/output/json.h>
+#include <fosls_contact/base/interruption.h>
+#include <fosls_contact/base/json.h>
 #include <fosls_contact/output/postprocessor.h>
+#include <fosls_contact/problem/fosls_problem.h>
 #include <fosls_contact/problem/initial_guess.h>
 #include <fosls_contact/problem/memory_budget.h>
 #include <fosls_contact/problem/problem_checks.h>

@@ -1,5 +1,5 @@
-#include <fosls_contact/output/error_line.h>
-#include <fosls_contact/output/file_system.h>
+#include <fosls_contact/base/error_line.h>
+#include <fosls_contact/base/file_system.h>
 
 #include <fcntl.h>
 #include <sys/stat.h>

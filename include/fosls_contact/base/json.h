@@ -1,5 +1,5 @@
-#ifndef fosls_contact_output_json_h
-#define fosls_contact_output_json_h
+#ifndef fosls_contact_base_json_h
+#define fosls_contact_base_json_h
 
 #include <cmath>
 #include <iomanip>

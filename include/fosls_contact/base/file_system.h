@@ -1,5 +1,5 @@
-#ifndef fosls_contact_output_file_system_h
-#define fosls_contact_output_file_system_h
+#ifndef fosls_contact_base_file_system_h
+#define fosls_contact_base_file_system_h
 
 #include <sys/types.h>
 

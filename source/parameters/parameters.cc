@@ -1,6 +1,6 @@
 #include <deal.II/base/utilities.h>
 
-#include <fosls_contact/parameters.h>
+#include <fosls_contact/parameters/parameters.h>
 
 #include <sstream>
 

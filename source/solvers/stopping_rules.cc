@@ -1,4 +1,4 @@
-#include <fosls_contact/output/stopping_rules.h>
+#include <fosls_contact/solvers/stopping_rules.h>
 
 #include <algorithm>
 #include <cmath>

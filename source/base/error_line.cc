@@ -1,7 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
-#include <fosls_contact/input/command_line.h>
-#include <fosls_contact/output/error_line.h>
+#include <fosls_contact/base/error_line.h>
+#include <fosls_contact/base/exit_code.h>
 
 #include <unistd.h>
 
@@ -184,7 +184,7 @@ namespace FoslsContact
         return 1;
       }
     print(line);
-    MPI_Abort(MPI_COMM_WORLD, CommandLine::error_on_some_processes);
-    return CommandLine::error_on_some_processes;
+    MPI_Abort(MPI_COMM_WORLD, ExitCode::error_on_some_processes);
+    return ExitCode::error_on_some_processes;
   }
 } // namespace FoslsContact

@@ -97,7 +97,7 @@ namespace FoslsContact
     dof_handler.distribute_mg_dofs();
     // The geometric level numbering is for the smoother's memory access
     // only (LevelDoFNumbering); deal.II 9.4 renumbers no level of a
-    // parallel::shared mesh (measured: the level then has no DoFs), so the
+    // parallel::shared mesh (the level is left without DoFs), so the
     // levels of a replicated mesh keep deal.II's numbering.
     if (distribution == MeshDistribution::partitioned)
       for (unsigned int l = 0; l < n_uniform; ++l)

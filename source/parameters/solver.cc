@@ -28,8 +28,7 @@ namespace FoslsContact
                           "not depend on the number of threads; deal.II's sums "
                           "(dot products in the Newton step's CG) are split by "
                           "thread count, so other results can differ in the last "
-                          "digits (measured: the contact force to 2e-10 relative or "
-                          "better, doc/parallel_results.md).");
+                          "digits (doc/parallel_results.md has by how much).");
         prm.declare_entry("Check coarse defects",
                           "false",
                           Patterns::Bool(),
@@ -39,8 +38,8 @@ namespace FoslsContact
                           "visit's; with true, it is also recomputed as P~^T (r - A v) "
                           "and the largest difference, relative to |P~^T| (|A| |v| + "
                           "|r|) (max norms), is written to summary.json as "
-                          "coarse_defect_difference (round-off: at most 1.4e-17 "
-                          "measured), with the number of such visits as "
+                          "coarse_defect_difference (round-off, doc/method.md "
+                          "section 7.3), with the number of such visits as "
                           "coarse_defect_checks. The iterates are the same; the solve "
                           "time and, on several processes, the communication include "
                           "the check's products with the level's matrix and P~^T.");
@@ -171,7 +170,7 @@ namespace FoslsContact
                         "sweeps read the rows of the level matrices: less memory, "
                         "most of all in 3D, where a face DoF's row is in the "
                         "patches of the face's four vertices, but slower sweeps; "
-                        "measured in doc/performance.md). The iterates are the "
+                        "doc/performance.md, section 5). The iterates are the "
                         "same to the bit.");
       declare_run_parameters(prm, defaults);
       prm.leave_subsection();
@@ -188,11 +187,10 @@ namespace FoslsContact
       tolerance      = prm.get_double("Tolerance");
       max_iterations = prm.get_integer("Max iterations");
       const std::string stop = prm.get("Stopping criterion");
-      // auto: the multigrid stops where further iterations cannot change
-      // the answer beyond its discretization error (measured on the
-      // level-4 half ball: the force of the tolerance stop to 3e-7 after 3
-      // instead of 9 iterations); a scene that asks for a tolerance of its
-      // own gets it
+      // auto: the multigrid stops where further iterations cannot change the
+      // answer beyond its discretization error, in a third of the iterations of
+      // the tolerance stop (doc/performance.md, "Figures behind the code"); a
+      // scene that asks for a tolerance of its own gets it
       stopping = stop == "tolerance" ? Stopping::tolerance :
                  stop == "discretization accuracy" ?
                                        Stopping::discretization_accuracy :
@@ -222,19 +220,17 @@ namespace FoslsContact
       check_coarse_defects  = prm.get_bool("Check coarse defects");
       cross_check           = prm.get_bool("Cross check");
       prm.leave_subsection();
-      // without smoothing the cycle never changes the finest level's
-      // oscillating part: the first correction is the coarse one, and the
-      // run stopped at once at the wrong answer (measured: the square's
-      // level 5 ended at the level-1 contact force, 0.02572 against 0.02705)
-      // (the estimate of the algebraic error takes the rate as steady; that
-      // of projected Gauss-Seidel keeps growing: measured 0.94 after 34
-      // sweeps on the square's level 5, which then stopped with the contact
-      // force 5% off)
+      // the estimate of the algebraic error takes the rate as steady; that
+      // of projected Gauss-Seidel keeps growing, and the run stopped with
+      // the contact force far off (doc/performance.md, "Figures behind the code")
       AssertThrow(type != Type::projected_gauss_seidel ||
                     stopping != Stopping::discretization_accuracy,
                   ExcMessage("parameter 'Solver/Stopping criterion' = discretization accuracy "
                              "is not available for Solver/Type = projected gauss seidel, whose "
                              "rate is not steady: use Stopping criterion = tolerance"));
+      // without smoothing the cycle never changes the finest level's
+      // oscillating part: the first correction is the coarse one, and the
+      // run stopped at once at the wrong answer (doc/performance.md, "Figures behind the code")
       AssertThrow(type != Type::monotone_multigrid || pre_smoothing + post_smoothing > 0,
                   ExcMessage("parameters 'Solver/Pre smoothing' and 'Solver/Post smoothing' are "
                              "both 0: the monotone multigrid needs at least one smoothing step"));

@@ -22,13 +22,13 @@ namespace FoslsContact
   bool
   AdaptiveSteps::singular_stress(const std::string &stress_unit, std::string &text) const
   {
-    // Near a singular point the stress grows like r^(alpha - 1), alpha < 1,
-    // and its largest nodal value by 2^(1 - alpha) whenever the cells there
-    // are halved: at the edge of the bonded punch of prm/punch.prm measured
-    // 592 -> 1763 MPa from level 2 to level 5. A smooth field's peak
-    // converges instead. Taken as singular: the peak rose by more than 5%
-    // at each of the last two refinements and stayed within the diameter
-    // of the cells of the first of them, where the cells got smaller.
+    // Near a singular point the stress grows like r^(alpha - 1), alpha < 1, and
+    // its largest nodal value by 2^(1 - alpha) whenever the cells there are
+    // halved (the edge of the bonded punch of prm/punch.prm,
+    // doc/performance.md, "Figures behind the code"). A smooth field's peak
+    // converges instead. Taken as singular: the peak rose by more than 5% at
+    // each of the last two refinements and stayed within the diameter of the
+    // cells of the first of them, where the cells got smaller.
     const unsigned int n = steps.size();
     if (n < 3 || steps.back().reference)
       return false;

@@ -576,7 +576,7 @@ namespace FoslsContact
     Utilities::System::MemoryStats memory;
     Utilities::System::get_memory_stats(memory);
     // (deal.II's MemoryStats has no RssFile: the file-backed pages, those of
-    // the program and its libraries, 153 MB in bench/scale.py's runs; read
+    // the program and its libraries (doc/performance.md, section 5); read
     // where the kernel reports it, 0 where it does not)
     double        rss_file_kb = 0.;
     std::ifstream status("/proc/self/status");

@@ -137,10 +137,9 @@ namespace FoslsContact
           mode.local_element(hanging.first) = 0.;
         discretization.rotate_to_normal_tangential(L, mode);
       }
-    // free: round-off (measured: 7e-17 on the square with a roller on top,
-    // 4e-16 on the cube held in z only); held: the energy of the cut-off
-    // boundary layer, O(h) (measured: 3e-4 on the square's level 9, 2e-4 on
-    // the half disc with 5 levels and Grading 3, 6e-3 on the cube's level 5)
+    // free: round-off; held: the energy of the cut-off boundary layer, O(h),
+    // orders of magnitude above the threshold on every scene
+    // (doc/performance.md, "Figures behind the code")
     const double   threshold = 1e-10;
     Vector<double> coefficients;
     const double   energy =

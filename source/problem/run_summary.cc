@@ -445,10 +445,9 @@ namespace FoslsContact
     // the sum of the cellwise parts integrates the residuals themselves.
     // They part where the form's round-off reaches J: entries of C_eq h^-2
     // cancel in div sigma_h, so weights many orders apart or cells many
-    // orders smaller than the domain (measured: 3.7% with C_eq = 1e8 at
-    // level 8 of the L-shape, 5e-3 with C_eq = 1e6 after 10 adaptive
-    // steps; below 1e-4 on the uniform meshes of the benchmarks). A J
-    // at the round-off of its start is no news.
+    // orders smaller than the domain part them by far more than on the
+    // uniform meshes of the benchmarks (doc/performance.md, "Figures behind the code").
+    // A J at the round-off of its start is no news.
     const double J_cells = indicators.total() * scene.scaling().functional(dim);
     const double gap     = std::abs(J - J_cells);
     if (gap > 1e-3 * std::abs(J_cells) && gap > 1e-12 * std::abs(J_start))

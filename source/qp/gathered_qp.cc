@@ -14,8 +14,8 @@ namespace FoslsContact
     /**
      * Every process's @p mine on process 0 (empty elsewhere), in the order
      * of the ranks, as raw bytes: Utilities::MPI::gather serializes and
-     * compresses its data, which took a fifth of the definiteness check
-     * of the cube at level 4 on one process.
+     * compresses its data, a large part of the definiteness check even on
+     * one process (doc/performance.md, section 6).
      */
     template <typename T>
     std::vector<std::vector<T>>

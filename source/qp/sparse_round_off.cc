@@ -28,9 +28,10 @@ namespace FoslsContact
                  const SparseMatrix<double> *                               part)
   {
     // The rule treats a_ij and a_ji alike, so a symmetric pattern stays
-    // symmetric unless one of them is within round-off of the threshold
-    // (measured on A: all entries are below 1e-15 or above 1e-8 of
-    // sqrt(a_ii a_jj); the patch colors do not rely on symmetry).
+    // symmetric unless one of them is within round-off of the threshold,
+    // which lies in a wide gap between the round-off entries and the others
+    // (ConstrainedQP::round_off_drop; the patch colors do not rely on
+    // symmetry).
     // sqrt(|diagonal of A - p|) and sqrt(|diagonal of p|), local entries
     // (with the ghost entries: see LocalElements)
     const unsigned int  n_local = partitioner->locally_owned_size() + partitioner->n_ghost_indices();

@@ -19,11 +19,10 @@ namespace FoslsContact
     // The Jacobian determinant of the bilinear map at every corner of every
     // cell, on every level: a corner at or below 0 is an inverted (or
     // degenerate) cell, where the FOSLS functional is no longer a sum of
-    // squares (measured: the half disc with Grading 3.7 gave J = -3.7e-5
-    // with the coarse mesh alone, Grading 4 with 3 levels J = -2.4e-3 and a
-    // contact force 28% off, while the area of every coarse cell was
-    // positive). Refinement moves the boundary vertices onto the circle, so
-    // the finer levels are checked too.
+    // squares: J can go negative and the answer far off while the area of
+    // every coarse cell is positive (doc/performance.md, "Figures behind the code"). Refinement
+    // moves the boundary vertices onto the circle, so the finer levels are
+    // checked too.
     unsigned int first_bad_level = numbers::invalid_unsigned_int;
     Point<dim>   bad_center;
     for (const auto &cell : tria.cell_iterators())

@@ -58,8 +58,7 @@ namespace FoslsContact
     if (counts.size() == 1)
       {
         // one process: the level's matrix and roles are global already
-        // (gathering a copy took 0.2 ms on the square's level 2, 130 DoFs,
-        // as long as its Cholesky factor)
+        // (gathering a copy took as long as its Cholesky factor)
         global = &A;
         role_global.assign(role.begin(), role.begin() + n);
       }
@@ -104,8 +103,7 @@ namespace FoslsContact
                        const LevelVector &                v)
   {
     // r, ub and v of all processes in one collective, as triples (instead
-    // of one collective per vector: the coarse solves of the square's
-    // level 5 on 2 processes took 0.08 ms less per solve, 18 visits)
+    // of one collective per vector, each a latency per coarse visit)
     const auto n_owned = partitioner.locally_owned_size();
     const auto n_all   = partitioner.size();
     r_all.reinit(n_all, true);

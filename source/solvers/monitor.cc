@@ -57,11 +57,9 @@ namespace FoslsContact
     // account: at a rate rho the error is about rho/(1-rho) times the
     // correction, so where rho > 1/2 that multiple of the correction is
     // compared (rho: the larger of the last two rates, so that one lucky
-    // step does not end a slow run). A plain W-cycle creeping at 0.992
-    // (the square with contact at one end, gap 0.02 (1 - x), 6 levels,
-    // zero start, Krylov steps = 0) stops after 2010 iterations, the force
-    // 2.8e-7 off the active set solver's; comparing the correction alone
-    // stopped it after 1376 iterations, 3.4e-5 off.
+    // step does not end a slow run): comparing the correction alone
+    // stopped a plain W-cycle creeping at 0.992 a hundred times farther
+    // from the active set solver's force (doc/performance.md, "Figures behind the code").
     // (history[0] is the start, whose rate is 0)
     const double rho    = std::max(r.rate, history[history.size() - 2].rate);
     const double factor = rho < 1. ? std::max(1., rho / (1. - rho)) :
@@ -120,13 +118,13 @@ namespace FoslsContact
   bool
   Monitor::diverged() const
   {
-    // Every step of the monotone solvers (projected Gauss-Seidel, the
-    // multigrid cycles and their Newton steps) lowers J or leaves it, so a
-    // J that grows by more than its evaluation error over an iteration
-    // means the solver's local model is not the functional's; going on
-    // would hand the user an iterate growing without bound (measured: J
-    // 3.5e-6, 2.8e31, 6.6e81). The active set method is no descent method
-    // and does not ask for the check.
+    // Every step of the monotone solvers (projected Gauss-Seidel, the multigrid
+    // cycles and their Newton steps) lowers J or leaves it, so a J that grows
+    // by more than its evaluation error over an iteration means the solver's
+    // local model is not the functional's; going on would hand the user an
+    // iterate growing without bound (doc/performance.md, "Figures behind the
+    // code"). The active set method is no descent method and does not ask for
+    // the check.
     if (!detect_divergence || history.size() < 2)
       return false;
     const double previous = history[history.size() - 2].functional.total,

@@ -202,8 +202,8 @@ namespace FoslsContact
         // v + alpha P~ c is P~^T (r - A v) - alpha P~^T A P~ c =
         // r_coarse - alpha A_{l-1} c, with A_{l-1} c from the last visit:
         // no product with the fine matrix and P~. (The same up to
-        // round-off: the square's cycles and J unchanged on levels 5-9,
-        // solves 2% (level 5) to 7% (level 7) faster on one thread.)
+        // round-off: the cycles and J do not change; doc/performance.md,
+        // section 3.)
         work.r_coarse.add(-alpha, work.Ac);
         if (parameters.check_coarse_defects)
           check_coarse_defect(l, A, r, v, work.r_coarse);

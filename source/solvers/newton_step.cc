@@ -111,15 +111,13 @@ namespace FoslsContact
                              const LevelVector &  residual,
                              LevelVector &        d)
   {
-    // d = increment + (the solution of the linear problem on the free
-    // DoFs). A free DoF that the direction would push past its bound is
-    // moved exactly to its bound instead (a prescribed increment) and the
-    // linear problem is solved again without it: otherwise the projection
-    // in the line search cuts such a DoF back, and the rest of the
-    // direction, computed for it moving on, is far from a good step (on
-    // the graded half disc, prm/hertz.prm with 4 levels and Grading 2, two
-    // such DoFs made the projected step's energy 1e6 times its decrease,
-    // and the run took 49 iterations).
+    // d = increment + (the solution of the linear problem on the free DoFs). A
+    // free DoF that the direction would push past its bound is moved exactly to
+    // its bound instead (a prescribed increment) and the linear problem is
+    // solved again without it: otherwise the projection in the line search cuts
+    // such a DoF back, and the rest of the direction, computed for it moving
+    // on, is far from a good step (doc/performance.md, "Figures behind the
+    // code").
     const auto &   A       = qp.matrix;
     const auto     n_owned = qp.n_owned();
     unsigned int   n_cycles = 0;
@@ -225,12 +223,9 @@ namespace FoslsContact
     //    descent direction.
     // b) alone is not enough: where the DoFs fixed by the rounds have
     //    positive multipliers, alpha* > 1, and p cuts them back to their
-    //    bound while the rest of p moves on as if they did not. On the
-    //    graded half disc (prm/hertz.prm, Grading 2, 5 levels), p - x had
-    //    85 to 1300 times the energy of d, the step along it decreased J 70
-    //    to 500 times less than x + d, the two DoFs stayed 7.7e-3 away from
-    //    their bound, and the run stalled (200 iterations, rate 0.996 per
-    //    cycle; with both steps: 10 iterations, 182 cycles).
+    //    bound while the rest of p moves on as if they did not: p - x
+    //    has far more energy than d, the step along it decreases J far
+    //    less than x + d, and the run stalls (doc/performance.md, "Figures behind the code").
     const auto  n_owned = qp.n_owned();
     LevelVector Ad = qp.new_vector(), step = qp.new_vector();
     vmult(qp.matrix, Ad, d);

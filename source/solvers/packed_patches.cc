@@ -115,7 +115,7 @@ namespace FoslsContact
      * neighbourhood (the patch DoFs, then the other columns of their
      * rows), as offsets; then allocate the packed arrays, uninitialized:
      * the fill writes every entry, and its threads touch the pages first
-     * (zeroing 150 MB on level 9 took a fifth of the set-up). Rows read
+     * (zeroing the arrays was a large part of the set-up). Rows read
      * from the matrix: no rows, and a neighbourhood is the patch.
      */
     void
@@ -298,12 +298,11 @@ namespace FoslsContact
   {
     // The layout is counted first and then filled in place, patch by patch
     // in parallel: every array is allocated once, at its size, and left
-    // uninitialized until the fill. Measured on level 9 of the square (2
-    // threads): the finest two levels took 0.50 s when the arrays grew
-    // serially (a third of the solve; reallocations, their page faults and
-    // the zeroing), 0.19 s this way. A parallel layout in pieces, copied
-    // into the packed arrays, needed both at once: 18% more peak memory on
-    // the 3D ball at level 5, against 1% less this way.
+    // uninitialized until the fill: arrays that grew serially cost their
+    // reallocations, their page faults and the zeroing (doc/performance.md,
+    // section 3). A parallel layout in pieces, copied into the packed
+    // arrays, would need both at once and raise the peak memory
+    // (doc/performance.md, "Figures behind the code").
     linear_patch.clear();
     const unsigned int n_dofs = matrix.m();
     // (row_defect() sums in global order only where the owned DoFs are

@@ -17,10 +17,8 @@ namespace FoslsContact
     /**
      * Patches per task of a sweep: the patches of one color are
      * independent, so any split among threads gives the same result.
-     * Pieces of 16 patches: level 5 of the square, whose colors have about
-     * 70 patches on the finest level, took 0.35 instead of 0.37 us per
-     * cycle per DoF with 64 (the best of 15 solves each); levels 6-9 the
-     * same.
+     * Pieces of 16 patches keep both threads busy on the small levels,
+     * whose colors have some 70 patches (doc/performance.md, section 3).
      */
     constexpr unsigned int sweep_grain = 16;
 

@@ -29,8 +29,8 @@ namespace FoslsContact
     // above it: four iterations in a row without a new smallest correction,
     // all within 1000 times the estimate, is the floor as well. (A slow
     // steady decrease must not be taken for it: one of the four must have
-    // gone up, rate >= 1. Without that condition the creep at 0.992 above
-    // stopped here after 1473 iterations, the force 1.6e-5 off.)
+    // gone up, rate >= 1; without that condition the creep of the
+    // Monitor's example stopped here with the force far off.)
     if (!stop && history.size() > 8)
       {
         double smallest_before = std::numeric_limits<double>::max();
@@ -60,9 +60,9 @@ namespace FoslsContact
     // squared discretization error. The estimate holds only in the linear
     // phase (paper section 7, phase III): the active set must not have
     // changed in the last iteration, and rho is the largest rate since it
-    // last changed. (On the half disc with 4 levels, with the mean rate of
-    // the nonlinear phase the run stopped after 2 iterations at 10 times
-    // the converged J.) (rho is not capped below 1: with a cap of 0.95 a
+    // last changed. (With the mean rate of the nonlinear phase a run
+    // stopped long before J had converged: doc/performance.md, "Figures
+    // behind the code".) (rho is not capped below 1: with a cap of 0.95 a
     // method slower than that would stop too early; projected Gauss-Seidel,
     // whose rate is not steady, is refused this criterion, see
     // Parameters::Solver)

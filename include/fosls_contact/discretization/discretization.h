@@ -46,7 +46,7 @@ namespace FoslsContact
    *   multigrid levels, distributed over the processes of @p comm. On
    *   every level a process owns the cells p4est gives it (a coarse cell
    *   belongs to the owner of its first child) and sees the ghost cells
-   *   around them; measured (2D and 3D, 1 to 3 processes): the cells
+   *   around them; as tested (2D and 3D, 1 to 3 processes), the cells
    *   around every vertex of an owned cell, the children of owned cells
    *   and the parents of ghost cells are always there. That is what the
    *   level data, the patches and the transfer below rely on.

@@ -20,14 +20,13 @@ namespace FoslsContact
    * same function, since the spaces are nested.
    *
    * deal.II's SolutionTransfer prolongates with the element's reference
-   * matrices, which do not know the sign an RT0 basis function takes on a
-   * face whose orientation is not the standard one (the half disc's mesh
-   * has such faces): the stresses it carries over are wrong there
-   * (measured: J of the carried solution 0.60 against 2.9e-7 before, on
-   * the Hertz scene's fourth mesh). Here the prolongation applies the
-   * parent's and the child's signs (rt_signs()), as LevelTransfer does
-   * between the uniform levels.
-   * On a replicated mesh (as adaptive refinement): every cell is here.
+   * matrices, which do not know the sign an RT0 basis function takes on a face
+   * whose orientation is not the standard one (the half disc's mesh has such
+   * faces): the stresses it carries over are wrong there, and J of the carried
+   * solution is orders of magnitude above J before (doc/performance.md,
+   * "Figures behind the code"). Here the prolongation applies the parent's and
+   * the child's signs (rt_signs()), as LevelTransfer does between the uniform
+   * levels. On a replicated mesh (as adaptive refinement): every cell is here.
    */
   template <int dim>
   class RefinementTransfer

@@ -30,8 +30,8 @@ namespace FoslsContact
    * copies of RT0 in the FESystem (the stress rows) share a face's flip,
    * and the FESystem computes each copy's values as the lone element does.
    * This is a few times cheaper than one FEFaceValues reinit() of the whole
-   * FESystem per face, which took 0.16 s of the set-up of the square's
-   * level 9.
+   * FESystem per face, which was a visible part of the set-up
+   * (doc/performance.md, section 3).
    */
   template <int dim>
   class RtFaceFlips

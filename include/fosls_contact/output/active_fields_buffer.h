@@ -15,7 +15,8 @@ namespace FoslsContact
    * (warp by vector, glyphs) use the active vector.
    *
    * The piece is not held as text: deal.II writes the tag after the points
-   * and cells, and the text of the cube's level 7 is 110 MB. What is written
+   * and cells, and the text of a large mesh is as large as the solver's
+   * largest structures (doc/performance.md, "Figures behind the code"). What is written
    * is searched where it arrives; only the last characters, which may begin
    * the tag, are held back, and a write is copied only where the tag may
    * straddle it and the one before (tests/unit/active_fields_buffer splits

@@ -24,17 +24,17 @@ namespace FoslsContact
       bool c_compl_auto = true;
 
       /**
-       * The largest C_compl that auto chooses: the weight with which the
-       * solvers' convergence and the shipped scenes' results are measured
-       * (doc/method.md section 6); a larger weight only brings the problem
-       * closer to indefinite.
+       * The largest C_compl that auto chooses: the weight of the solvers'
+       * convergence studies and the shipped scenes' results (doc/method.md
+       * section 6); a larger weight only brings the problem closer to
+       * indefinite.
        */
       static constexpr double auto_compl_cap = 0.1;
       /**
        * The fraction of the largest definite C_compl on the checked level
        * that auto chooses, where that is below auto_compl_cap: the limit goes
-       * down under refinement (at most 35% from one level to the next
-       * measured, doc/method.md section 6), and a check on a coarser level
+       * down under refinement (by how much from one level to the next:
+       * doc/method.md section 6), and a check on a coarser level
        * than the finest raises the weight by
        * ProblemChecks::coarse_level_margin (50%).
        */

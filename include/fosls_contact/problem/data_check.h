@@ -23,13 +23,10 @@ namespace FoslsContact
    *    starting iterate that is not finite);
    *  - data that are all so small that the dimensionless solution's
    *    squares underflow (nonzero, but the largest load below #smallest).
-   *    Measured with the push of the square (prm/square.prm, 6 levels),
-   *    the contact force against the push's 1e-2 L: 2e-11 off at 1e-150 L,
-   *    3e-8 at 1e-155 L, 5% at 1e-160 L (after 2 iterations), and 1e-170 L
-   *    "converged" after one iteration with a largest displacement of 0;
-   *    the cube on 4 levels: 1e-13 off at 1e-150 L, 2e-7 at 1e-155 L. The
-   *    decline is steep and comes earlier on finer meshes, hence the
-   *    margin of 1e5 from the first measured loss.
+   *    The contact force of a tiny push loses its digits steeply below
+   *    about 1e-155 L, earlier on finer meshes, and a push of 1e-170 L
+   *    "converges" to nothing; hence the margin of 1e5 from the first
+   *    loss (doc/performance.md, "Figures behind the code").
    * Each is refused in one line that names the parameter, its value and the
    * point (in the scene's units), decided by all processes together.
    */

@@ -94,12 +94,10 @@ namespace FoslsContact
      * the finest. bench/definiteness_limit.py bisects the largest definite
      * C_compl level by level: it goes down under refinement by a share that
      * shrinks from level to level by a steady factor (on the square about
-     * 1/2: -19.7%, -9.7%, -3.8% from level 3 to 6; on the cube about 0.6:
-     * -35.6%, -21.3% from level 2 to 4), so the way down from a level is
-     * about its last step times factor / (1 - factor): on the square's
-     * level 6 3.3% (measured to level 9), on the cube's level 4 about a
-     * third. The margin covers
-     * both; figures in doc/method.md section 6.
+     * 1/2, on the cube about 0.6), so the way down from a level is about
+     * its last step times factor / (1 - factor): a few percent from the
+     * square's level 6, about a third from the cube's level 4. The margin
+     * covers both; the figures are in doc/method.md section 6.
      */
     static constexpr double coarse_level_margin = 0.5;
 

@@ -26,14 +26,12 @@ namespace FoslsContact
     /**
      * A one-line warning that Solver/Type = active set will take long on
      * @p n_dofs DoFs, or "". Its sparse direct solves grow much faster than
-     * the DoFs (the fill-in of the factors), the more so in 3D, and the
-     * solve says nothing before it ends: measured on 2 busy cores with the
-     * square and the cube (2 active set iterations each), 2D: 3.1 s for
-     * 25,090 DoFs and 31.6 s for 99,330 (like N^1.7); 3D: 0.13 s for 1,095
-     * and 12.9 s for 7,371 (like N^2.4), so that the cube's 53,000 DoFs of
-     * level 5 take many minutes (432 s measured). The warning comes above
-     * warning_dofs(), where an iteration takes about 10 s, with the time
-     * per iteration these measurements predict.
+     * the DoFs (the fill-in of the factors), like N^1.7 in 2D and N^2.4 in
+     * 3D on the square and the cube, the more so in 3D, and the solve says
+     * nothing before it ends: the cube's level 5 takes many minutes. The
+     * warning comes above warning_dofs(), where an iteration takes about
+     * 10 s, with the time per iteration that the two runs per dimension it
+     * rests on predict (doc/performance.md, "Figures behind the code").
      */
     static std::string active_set_warning(const Parameters::Solver::Type type,
                                           const types::global_dof_index  n_dofs);

@@ -99,9 +99,9 @@ namespace FoslsContact
     /**
      * Entries of A below round_off_drop times the scale of the parts that
      * couple them (zero_round_off() with the equilibrium part: at most
-     * sqrt(|a_ii a_jj|)) are round-off of an exact zero (measured on
-     * uniform meshes: all such entries are below 1e-15 of sqrt(|a_ii
-     * a_jj|), all others above 1e-8) and are dropped.
+     * sqrt(|a_ii a_jj|)) are round-off of an exact zero, far below this and
+     * the others far above it (doc/performance.md, "Figures behind the code"), and are
+     * dropped.
      */
     static constexpr double round_off_drop = 1e-13;
     LevelVector          rhs_eq, rhs_compl;
@@ -178,8 +178,8 @@ namespace FoslsContact
      * sqrt(cond A) ~ 1/h_min ~ n^(1/dim) r, with r the refinement ratio of
      * the mesh (AlgebraicLevel::refinement_ratio; 1 on a uniform mesh,
      * whose h_min is about n^(-1/dim)). The estimate is the product of the
-     * two: measured on the square (levels 6-9, lambda = 1 and inf), the
-     * corrections stop decreasing at 4-5 times this value. Without the
+     * two; the corrections stop decreasing at a few times this value
+     * (doc/performance.md, "Figures behind the code"). Without the
      * factor r the estimate is too low on adaptive meshes, and their
      * solves end only by the stagnation test, after four iterations of
      * noise.
@@ -189,8 +189,9 @@ namespace FoslsContact
      * parts() at @p x, energy_norm() of the correction @p d and
      * round_off_correction() at @p x, each the same number the function
      * returns, with one pass over the rows of A instead of three: A is
-     * the largest structure of a solve (110 MB on the square's level 9),
-     * and a pass over it costs more than its arithmetic. This is what the
+     * one of the largest structures of a solve (doc/performance.md,
+     * section 1), and a pass over it costs more than its arithmetic. This
+     * is what the
      * monitor evaluates after every iteration.
      */
     IterateMeasures measure(const LevelVector &x, const LevelVector &d) const;

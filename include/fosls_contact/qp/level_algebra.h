@@ -196,10 +196,8 @@ namespace FoslsContact
    * (a trivially copyable object, or a std::vector of them) as bytes with
    * MPI_Allgather(v); anything else through Utilities::MPI::all_gather().
    * (The Galerkin updates gather twice per level and the coarse
-   * factorization three times: serialized, a coarse solve of the square's
-   * level 5 costs 0.29 ms against 0.08 ms without on one process, and the
-   * set-up of its exactly solved level, 130 DoFs, 2.7 ms against 0.2 ms
-   * as bytes on two.)
+   * factorization three times, so serialization would cost the coarse
+   * solves several times their time; doc/performance.md, section 3.)
    */
   template <typename T>
   std::vector<T>

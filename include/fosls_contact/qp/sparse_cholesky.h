@@ -23,11 +23,11 @@ namespace FoslsContact
    * without its contact and fixed DoFs, which is positive definite
    * whenever the problem is well posed (doc/method.md section 6). A
    * Cholesky factorization needs no pivoting and works on dense blocks of
-   * columns: on the cube's level 4 (7,371 DoFs, the level the cube's
-   * checks run on from level 5 up) the check takes 0.42 s with it, 1.19 s
-   * with KLU's LU (Amesos, the reference solver's factorization), and on
-   * level 5 18.4 s against more than 120 s (bench/definiteness_cost.py,
-   * doc/performance.md).
+   * columns: the check takes a third of the time it takes with KLU's LU
+   * (Amesos, the reference solver's factorization) on the cube's level 4,
+   * the level the cube's checks run on from level 5 up, and far less on
+   * finer levels (bench/definiteness_cost.py, doc/performance.md, section
+   * 6).
    */
   class SparseCholesky
   {

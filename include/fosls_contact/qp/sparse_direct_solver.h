@@ -21,8 +21,8 @@ namespace FoslsContact
    * A sparse direct solver for the reference solver (the active set
    * method and its cross checks): Trilinos Amesos with KLU, an LU
    * factorization with pivoting. On these FOSLS matrices KLU factorizes
-   * about 8x faster than UMFPACK (measured: 25,090 DoFs 1.2 s vs 10.4 s;
-   * 99,330 DoFs 10 s), so it is the fairer reference. On several processes
+   * several times faster than UMFPACK (doc/performance.md, "Figures behind the code"), so it is the
+   * fairer reference. On several processes
    * the matrix is a distributed Trilinos matrix; Amesos gathers it on one
    * process to factorize it (KLU is serial), which limits the reference
    * solver, not the multigrid method, to what one process can hold.
@@ -37,8 +37,8 @@ namespace FoslsContact
      * matrix's pattern) if given: KLU's fill-reducing ordering (AMD) works
      * on the pattern, and does far better on the DoF coupling pattern of
      * the mesh than on the pattern of a ConstrainedQP's matrix, from which
-     * zero and round-off entries are gone (square, level 7, active set
-     * solve: 1.3 s against 31 s; 11 s with explicit zeros only removed).
+     * zero and round-off entries are gone (an active set solve many times
+     * as fast; doc/performance.md, "Figures behind the code").
      * Collective.
      */
     void initialize(const SparseMatrix<double> &                               matrix,

@@ -66,8 +66,8 @@ namespace FoslsContact
    * longer read, before the new values are allocated: a caller that owns
    * that pattern and needs it no more can free its arrays there (the old
    * matrix is replaced right after without reading it), so that the old
-   * pattern and the new values are never held at once. On the cube at
-   * level 7 the old pattern is 1.2 GB.
+   * pattern and the new values are never held at once (on the largest
+   * meshes the old pattern is gigabytes).
    */
   void compress_to_nonzeros(SparseMatrix<double> &        matrix,
                             SparsityPattern &             sparsity,

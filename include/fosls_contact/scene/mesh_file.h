@@ -59,8 +59,7 @@ namespace FoslsContact
      * diameter. GridIn computes the cells' volumes from the absolute
      * coordinates, to turn negative ones around: above about 1e5 the
      * round-off of these products reaches the volume of the smallest cell
-     * and a cell can be turned inside out (measured: the quarter ball of
-     * prm/meshes/ moved by 3e4 from the origin, 1.5e6 cells away).
+     * and a cell can be turned inside out (doc/performance.md, "Figures behind the code").
      */
     double distance_in_cells() const;
 

@@ -12,7 +12,7 @@ namespace FoslsContact
    * exact discrete KKT point. Should an earlier active set come back instead
    * (the method cycles: possible for a positive definite matrix that is not
    * an M-matrix, and where multipliers and gaps are both zero at the
-   * solution, so that round-off decides their signs; measured with the
+   * solution, so that round-off decides their signs, as with the
    * obstacle normal (1, 0) on the square), it continues with a primal
    * active set method from its last iterate, which cannot cycle
    * (primal_active_set()). The test for the active set,

@@ -14,20 +14,19 @@ namespace FoslsContact
   using namespace dealii;
 
   /**
-   * The exact solve of a small coarsest level (at most a few thousand
-   * DoFs that move), minimize 1/2 c^T M c - g^T c subject to c_i <= s_i,
-   * for one matrix M and many right-hand sides: a W-cycle visits the
-   * coarsest level hundreds of times per operator (measured on the half
-   * disc, 4 levels: 1700 coarse solves, 31 ms each when factorized every
-   * time).
+   * The exact solve of a small coarsest level (at most a few thousand DoFs that
+   * move), minimize 1/2 c^T M c - g^T c subject to c_i <= s_i, for one matrix M
+   * and many right-hand sides: a W-cycle visits the coarsest level hundreds of
+   * times per operator, so a factorization per visit would cost more than the
+   * rest of the cycle (doc/performance.md, "Figures behind the code").
    *
    * A visit without a finite bound (every visit of the Newton step's
    * linear cycle) solves M c = g with the Cholesky factor of M; one with a
    * finite bound uses a BoxQP (the inverse and an active set method). Each
-   * is made when first needed for the current matrix: on the square's
-   * level 2 (100 DoFs that move) the factor takes about 0.1 ms and the
-   * inverse 0.65 ms, and a linear visit costs about the same with
-   * either (two triangular solves against one product with the inverse).
+   * is made when first needed for the current matrix: the factor is
+   * several times cheaper to make than the inverse, and a linear visit
+   * costs about the same with either (two triangular solves against one
+   * product with the inverse; doc/performance.md, "Figures behind the code").
    * M is positive definite in exact arithmetic, but should LAPACK refuse
    * the factor (a pivot <= 0 in floating point), the linear visits go to
    * the BoxQP, whose Gauss-Jordan inverse pivots.

@@ -21,12 +21,12 @@ namespace FoslsContact
    * either
    * - keeps a basis function that carries its flux through the free sons
    *   only (reroute(): the plain cycle). Without it no coarse function can
-   *   change the total contact force, and the plain cycle stalls (measured
-   *   on the half disc with 2 levels: rate 0.9999 per cycle; 13 cycles to
-   *   1e-8 with it);
+   *   change the total contact force, and the plain cycle stalls;
    * - or goes (remove_cut_faces(): the linear cycle that preconditions the
-   *   Newton step; there the rerouted basis measured worse, half disc with
-   *   4 levels: 432 instead of 160 cycles; 2 levels: 15 instead of 32).
+   *   Newton step, where the rerouted basis converges worse on the finer
+   *   half discs).
+   * (The cycles of both, with and without rerouting: doc/performance.md,
+   * "Figures behind the code".)
    *
    * Rerouting gives the free sons the flux the truncated ones lost and
    * restores the balance of the fine cells at the sons by a local
@@ -37,8 +37,8 @@ namespace FoslsContact
    * coarse cells, which the patch colors rely on), minimizing
    * (d + e)^T A (d + e), so that the column stays nearly divergence free.
    * (A column cut at a son has a divergence of order 1/h in the son's
-   * cell: measured 859 vs 0.007 in energy on the half disc.) A face with
-   * all sons truncated goes.
+   * cell, and an energy orders of magnitude above the corrected one.) A
+   * face with all sons truncated goes.
    *
    * Distributed: the owner of a coarse face (the owner of its cell)
    * decides; the operator's entries between the DoFs inside the coarse

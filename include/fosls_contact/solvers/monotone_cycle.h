@@ -117,14 +117,11 @@ namespace FoslsContact
      * levels below it. Its problem is linear (the obstacles of the linear
      * cycle are +inf) and its operator changes only with the roles of a
      * Newton step (on the square: once per solve), so its dense factor is
-     * computed that often, and a visit costs two triangular solves. On the
-     * square, level 2 (130 DoFs) took about 34 us per W-cycle visit with
-     * the levels below it, and 16 us solved exactly; the time per cycle
-     * and DoF went down by 9.6% on level 5, 4.5% on level 7 and 2.8% on
-     * level 9 (2 threads). Level 3 (450 DoFs) is too large for it: solved
-     * exactly the same way, a level-5 solve took 43 ms instead of 11, and
-     * UMFPACK took 2.6 ms to factorize it and 0.3 ms per solve. In 3D
-     * level 2 has 1095 DoFs and level 1 189.
+     * computed that often, and a visit costs two triangular solves: on the
+     * square's level 2 (130 DoFs) half of a W-cycle visit with the levels
+     * below it (doc/performance.md, section 3). Level 3 (450 DoFs) is too
+     * large for it: its dense factor costs more than the cycles it saves
+     * (doc/performance.md, "Figures behind the code"). In 3D level 2 has 1095 DoFs and level 1 189.
      */
     static constexpr unsigned int linear_coarse_max_dofs = 200;
 

@@ -26,11 +26,10 @@ namespace FoslsContact
    *     its bound and the linear problem solved again without it, as in a
    *     primal-dual active set step (at most max_rounds rounds). A round
    *     after the first starts CG from the last round's solution (zero at
-   *     the DoFs now fixed): started from zero, the last mesh of
-   *     prm/hertz_adaptive.prm had to take the residual of its second
-   *     round from 2.8e8 times the tolerance down to it, and ran out of
-   *     its 50 steps (that step's solve: 127 cycles, 9.7 s; warm
-   *     started: 74 cycles, 4.8 s);
+   *     the DoFs now fixed): started from zero, a later round has to take
+   *     its residual down from many orders of magnitude above the
+   *     tolerance and can run out of its Krylov steps (doc/performance.md,
+   *     "Figures behind the code");
    *  3. a line search that takes the better of two feasible steps;
    *  4. projected post-smoothing.
    * J never increases.
@@ -65,9 +64,8 @@ namespace FoslsContact
     /**
      * The most rounds of the Newton direction. Each round fixes at least
      * one more DoF, so the rounds end; they are capped all the same. A cap
-     * of 3 rounds was too low where the contact zone grows by a vertex per
-     * round: half disc, 5 levels, 20 iterations (264 cycles) against 6
-     * (111 cycles) with up to 10 rounds, the same with 30.
+     * of a few rounds is too low where the contact zone grows by a vertex
+     * per round (doc/performance.md, "Figures behind the code").
      */
     static constexpr unsigned int max_rounds = 20;
     /**
@@ -77,10 +75,8 @@ namespace FoslsContact
      * next to it, which one cycle removes, and a tolerance relative to
      * that norm stopped CG after 1 step with the smooth part of the error
      * untouched. The direction was then so far off that the best step
-     * along it was 0.2 d, every iteration (the square [-1,1]x[0,1] with
-     * gap 0.02 - 0.015 x^2, 5 levels, stalled at rate 0.993 with J 2.6
-     * times its minimum after 200 iterations; with this tolerance, 3
-     * iterations).
+     * along it was a fraction of d, every iteration, and the run stalled
+     * (doc/performance.md, "Figures behind the code").
      */
     static constexpr double cg_reduction = 1e-3;
 

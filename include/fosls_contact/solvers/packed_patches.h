@@ -18,9 +18,9 @@ namespace FoslsContact
    * The vertex patches of one level, packed for the sweeps of the
    * PatchSmoother: their DoFs, a copy of their matrix rows and the inverse
    * of every patch matrix, in sweep order, color by color. A sweep streams
-   * through these arrays in order, and from level 8 of the square on they
-   * no longer fit in cache (240 MB at level 9, against 110 MB for the
-   * matrix), so their size is the time of a sweep there:
+   * through these arrays in order, and on the largest levels they no
+   * longer fit in cache (about twice the matrix; doc/performance.md,
+   * section 1), so their size is the time of a sweep there:
    * - patch k has n = start[k+1] - start[k] DoFs; its neighbourhood, the
    *   columns of its rows, is neighbors[neighbor_start[k] ..
    *   neighbor_start[k+1]), the patch DoFs first;

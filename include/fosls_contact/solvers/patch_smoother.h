@@ -43,8 +43,7 @@ namespace FoslsContact
    * by the threads of MultithreadInfo. The iterates are therefore the same
    * for any number of threads, and the same as those of the serial sweep.
    * (A greedy coloring with the fewest colors, i.e. a multicolor
-   * Gauss-Seidel order, was measured too: plain V(3,3) on the square,
-   * lambda = 1, asymptotic rate 0.67-0.71 instead of 0.27-0.35.)
+   * Gauss-Seidel order, smooths far worse: doc/performance.md, "Figures behind the code".)
    *
    * Distributed: a process relaxes every patch with a DoF it owns, so a
    * patch at the border of its cells is relaxed by each process that owns

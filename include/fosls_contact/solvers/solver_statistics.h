@@ -21,10 +21,10 @@ namespace FoslsContact
   /**
    * Adds the wall time of its lifetime to a SectionTime, with a steady
    * clock and not with TimerOutput sections: entering and leaving a
-   * TimerOutput section costs about 2 us (a mutex, lookups by string and a
-   * system call for the CPU time), and the W-cycle enters about 30 per
-   * cycle on level 5 of the square, where that was 8% of the solve time
-   * (0.98 s against 0.90 s for 101 solves).
+   * TimerOutput section costs a mutex, lookups by string and a system call
+   * for the CPU time, and the W-cycle enters some 30 per cycle: on the
+   * small levels a measurable part of the solve (doc/performance.md,
+   * section 3, MultigridCounters).
    */
   class ScopedTime
   {

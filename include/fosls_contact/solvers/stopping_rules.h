@@ -12,7 +12,7 @@ namespace FoslsContact
    * The tests on a run's history that end it besides the tolerance: the
    * round-off floor of the corrections, the discretization accuracy
    * (paper section 7) and the stall of a slowly creeping cycle. Each rests
-   * on measured behaviour of the solvers (the comments give the figures);
+   * on the observed behaviour of the solvers (doc/performance.md, "Figures behind the code");
    * they are kept apart from the Monitor that records, prints and
    * decides, so that each rule can be read whole.
    */
@@ -50,16 +50,13 @@ namespace FoslsContact
   private:
     /**
      * The stall test's constants. The plain cycle where the contact zone
-     * ends inside coarse faces creeps at 0.996 to 1.000 per iteration
-     * with the active set settled (half disc, 3 levels; the square
-     * [-1,1] x [0,1] with the gap 0.02 - 0.015 x^2, 5 levels), its
-     * estimated error 1e6 to 3e7 times the tolerance's target, and is found from
-     * iteration 12 to 15 on. The slowest converging runs of the tests keep
-     * a margin: the plain cycle creeping at 0.997 on the square with
-     * contact at one end (mg_round_off_stop, 1368 iterations allowed
-     * 3000) would need 2.5 times the iterations left, and every other
-     * multigrid run of the tests has no 5 steady rates above 0.99 in the
-     * linear phase.
+     * ends inside coarse faces creeps at a rate of almost 1 per iteration
+     * with the active set settled, its estimated error orders of magnitude
+     * above the target; the window finds it soon after the active set
+     * settles. The slowest converging runs of the tests keep a margin: the
+     * slowest would still need more than twice the iterations left, and no
+     * other multigrid run of the tests has stall_window steady rates above
+     * stall_rate in the linear phase (doc/performance.md, "Figures behind the code").
      */
     static constexpr unsigned int stall_window = 5;
     static constexpr double       stall_rate   = 0.99;

@@ -356,36 +356,21 @@ namespace FoslsContact
   }
 
 
-  template <int dim>
-  void
-  FoslsAssembler<dim>::assemble(const unsigned int           level,
-                                ConstrainedQP &              qp,
-                                const std::function<void()> &release_coupling_pattern) const
+  namespace
   {
-    const auto &       fe   = discretization.get_fe();
-    const auto &       data = discretization.level(level);
-    const unsigned int n    = fe.n_dofs_per_cell();
-    // (the parts' matrices are on these until compress_matrices() puts
-    // them on their own patterns, below)
-    SparsityPattern eq_pattern, contact_pattern;
-    part_patterns(data, eq_pattern, contact_pattern);
-    qp.matrix_eq.reinit(eq_pattern);
-    qp.matrix_compl.reinit(contact_pattern);
-
-    // The cell terms, in parallel (WorkStream); the copier adds them to
-    // the global matrices one cell after the other in cell order, so the
-    // result does not depend on the number of threads.
-    //
-    // An exception in a worker is kept and thrown after the loop
-    // (WorkerExceptions).
-    WorkerExceptions   errors;
-    const unsigned int n_owned = data.n_owned();
-    // Whether a cell's terms reach an owned row: one of its DoFs, or a
-    // master of one of its hanging DoFs, is owned. Only such cells (and the
-    // owned ones, for J's constant) are computed: on a mesh held whole by
-    // every process (Discretization::MeshDistribution) every cell is here,
-    // and the others would be computed to be thrown away.
-    const auto reaches_owned_row = [&](const std::vector<types::global_dof_index> &dofs) {
+    /**
+     * Whether a cell's terms reach an owned row: one of its DoFs, or a
+     * master of one of its hanging DoFs, is owned. Only such cells (and the
+     * owned ones, for J's constant) are computed: on a mesh held whole by
+     * every process (Discretization::MeshDistribution) every cell is here,
+     * and the others would be computed to be thrown away.
+     */
+    template <int dim>
+    bool
+    reaches_owned_row(const LevelData<dim> &                      data,
+                      const std::vector<types::global_dof_index> &dofs)
+    {
+      const unsigned int n_owned = data.n_owned();
       for (const auto dof : dofs)
         {
           if (dof < n_owned)
@@ -397,65 +382,22 @@ namespace FoslsContact
                 return true;
         }
       return false;
-    };
-    auto worker = [&](const auto &cell, AssemblyScratch<dim> &scratch, AssemblyCopy &copy) {
-      copy.valid = false;
-      if (data.active_mesh ? cell->is_artificial() : !Discretization<dim>::is_present(cell))
-        return; // no DoFs on this process
-      errors.guard([&]() {
-          if (copy.dofs.size() != n) // (grown by eliminate_hanging() for another cell)
-            copy = AssemblyCopy(n);
-          copy.owned = data.owns(cell);
-          data.get_local_dofs(cell, copy.dofs);
-          if (!copy.owned && !reaches_owned_row(copy.dofs))
-            return;
-          const typename Triangulation<dim>::cell_iterator tria_cell(cell);
-          cell_terms(tria_cell, scratch, copy);
-          contact_terms(tria_cell, scratch, copy);
-          if (eliminate_hanging_dofs_of_cell(data,
-                                             copy.dofs,
-                                             {&copy.k_eq, &copy.k_const, &copy.k_compl},
-                                             {&copy.r_eq, &copy.r_compl}))
-            {
-              copy.k_total.reinit(copy.dofs.size(), copy.dofs.size());
-              copy.r_total.reinit(copy.dofs.size());
-            }
-          rotate(data, copy);
-          // J = 1/2 x^T A x - b^T x + c with A = 2 K and b = 2 r.
-          copy.k_total = 0;
-          copy.k_total.add(2., copy.k_eq);
-          copy.k_total.add(2., copy.k_const);
-          copy.r_total = 0;
-          copy.r_total.add(2., copy.r_eq);
-          if (copy.touches_contact)
-            {
-              copy.k_total.add(2., copy.k_compl);
-              copy.r_total.add(2., copy.r_compl);
-            }
-          // the matrices of J's parts, 2 K_eq and 2 K_compl, summed doubled
-          // (doubling is exact, so the sums are 2 times those of K): an
-          // empty matrix (no DoFs of the level here) is never scaled, which
-          // deal.II does not allow
-          copy.k_eq *= 2.;
-          if (copy.touches_contact)
-            copy.k_compl *= 2.;
-          const unsigned int n_kept = copy.dofs.size();
-          copy.order.resize(n_kept);
-          std::iota(copy.order.begin(), copy.order.end(), 0u);
-          std::sort(copy.order.begin(), copy.order.end(), [&](const auto a, const auto b) {
-            return copy.dofs[a] < copy.dofs[b];
-          });
-          copy.sorted_dofs.resize(n_kept);
-          for (unsigned int k = 0; k < n_kept; ++k)
-            copy.sorted_dofs[k] = copy.dofs[copy.order[k]];
-          copy.valid = true;
-        });
-    };
-    // Only the owned rows are summed here; every cell at an owned DoF is
-    // here (owned or ghost), so they are complete. The ghost rows the
-    // patches need come from their owners (compress_matrices()).
-    std::vector<double> row; // (the copier's: a row of a cell's matrix, by sorted column)
-    auto copier = [&](const AssemblyCopy &copy) {
+    }
+
+
+    /**
+     * The copier: the owned rows of one cell's terms added to @p qp. Only
+     * the owned rows are summed here; every cell at an owned DoF is here
+     * (owned or ghost), so they are complete. The ghost rows the patches
+     * need come from their owners (compress_matrices()). @p row is the
+     * copier's: a row of a cell's matrix, by sorted column.
+     */
+    void
+    add_to_qp(const AssemblyCopy & copy,
+              const unsigned int   n_owned,
+              std::vector<double> &row,
+              ConstrainedQP &      qp)
+    {
       if (!copy.valid)
         return;
       const auto &       dofs = copy.dofs;
@@ -486,7 +428,100 @@ namespace FoslsContact
           }
       if (copy.owned)
         qp.constant_eq += copy.constant_eq;
+    }
+  } // namespace
+
+
+  template <int dim>
+  template <typename CellIterator>
+  void
+  FoslsAssembler<dim>::local_terms(const LevelData<dim> &data,
+                                   const CellIterator &  cell,
+                                   AssemblyScratch<dim> &scratch,
+                                   AssemblyCopy &        copy) const
+  {
+    const unsigned int n = discretization.get_fe().n_dofs_per_cell();
+    if (copy.dofs.size() != n) // (grown by eliminate_hanging() for another cell)
+      copy = AssemblyCopy(n);
+    copy.owned = data.owns(cell);
+    data.get_local_dofs(cell, copy.dofs);
+    if (!copy.owned && !reaches_owned_row(data, copy.dofs))
+      return;
+    const typename Triangulation<dim>::cell_iterator tria_cell(cell);
+    cell_terms(tria_cell, scratch, copy);
+    contact_terms(tria_cell, scratch, copy);
+    if (eliminate_hanging_dofs_of_cell(data,
+                                       copy.dofs,
+                                       {&copy.k_eq, &copy.k_const, &copy.k_compl},
+                                       {&copy.r_eq, &copy.r_compl}))
+      {
+        copy.k_total.reinit(copy.dofs.size(), copy.dofs.size());
+        copy.r_total.reinit(copy.dofs.size());
+      }
+    rotate(data, copy);
+    // J = 1/2 x^T A x - b^T x + c with A = 2 K and b = 2 r.
+    copy.k_total = 0;
+    copy.k_total.add(2., copy.k_eq);
+    copy.k_total.add(2., copy.k_const);
+    copy.r_total = 0;
+    copy.r_total.add(2., copy.r_eq);
+    if (copy.touches_contact)
+      {
+        copy.k_total.add(2., copy.k_compl);
+        copy.r_total.add(2., copy.r_compl);
+      }
+    // the matrices of J's parts, 2 K_eq and 2 K_compl, summed doubled
+    // (doubling is exact, so the sums are 2 times those of K): an
+    // empty matrix (no DoFs of the level here) is never scaled, which
+    // deal.II does not allow
+    copy.k_eq *= 2.;
+    if (copy.touches_contact)
+      copy.k_compl *= 2.;
+    const unsigned int n_kept = copy.dofs.size();
+    copy.order.resize(n_kept);
+    std::iota(copy.order.begin(), copy.order.end(), 0u);
+    std::sort(copy.order.begin(), copy.order.end(), [&](const auto a, const auto b) {
+      return copy.dofs[a] < copy.dofs[b];
+    });
+    copy.sorted_dofs.resize(n_kept);
+    for (unsigned int k = 0; k < n_kept; ++k)
+      copy.sorted_dofs[k] = copy.dofs[copy.order[k]];
+    copy.valid = true;
+  }
+
+
+  template <int dim>
+  void
+  FoslsAssembler<dim>::assemble(const unsigned int           level,
+                                ConstrainedQP &              qp,
+                                const std::function<void()> &release_coupling_pattern) const
+  {
+    const auto &       fe   = discretization.get_fe();
+    const auto &       data = discretization.level(level);
+    const unsigned int n    = fe.n_dofs_per_cell();
+    // (the parts' matrices are on these until compress_matrices() puts
+    // them on their own patterns, below)
+    SparsityPattern eq_pattern, contact_pattern;
+    part_patterns(data, eq_pattern, contact_pattern);
+    qp.matrix_eq.reinit(eq_pattern);
+    qp.matrix_compl.reinit(contact_pattern);
+
+    // The cell terms, in parallel (WorkStream); the copier adds them to
+    // the global matrices one cell after the other in cell order, so the
+    // result does not depend on the number of threads.
+    //
+    // An exception in a worker is kept and thrown after the loop
+    // (WorkerExceptions).
+    WorkerExceptions   errors;
+    const unsigned int n_owned = data.n_owned();
+    auto worker = [&](const auto &cell, AssemblyScratch<dim> &scratch, AssemblyCopy &copy) {
+      copy.valid = false;
+      if (data.active_mesh ? cell->is_artificial() : !Discretization<dim>::is_present(cell))
+        return; // no DoFs on this process
+      errors.guard([&]() { local_terms(data, cell, scratch, copy); });
     };
+    std::vector<double> row;
+    auto copier = [&](const AssemblyCopy &copy) { add_to_qp(copy, n_owned, row, qp); };
 
     const auto &               dof_handler = discretization.get_dof_handler();
     const AssemblyScratch<dim> scratch(discretization.get_mapping(),

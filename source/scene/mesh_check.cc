@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <map>
 #include <sstream>
+#include <unordered_map>
 
 namespace FoslsContact
 {
@@ -387,28 +388,18 @@ namespace FoslsContact
   }
 
 
-  std::string
-  MeshCheck::read_gmsh(const std::vector<std::string> &lines)
+  /**
+   * A Gmsh file's format (1 for $NOD, 2, 40 or 41 from the $MeshFormat
+   * line, which MeshFile::check_text has checked) and the words of its
+   * sections that the messages name.
+   */
+  struct MeshCheck::GmshFormat
   {
-    // the format: 1 ($NOD), 2, 40 or 41 (the $MeshFormat line, which
-    // MeshFile::check_text has checked)
-    int         version = 0;
-    std::string format  = "1"; // the header's version, for messages
-    auto find    = [&](const std::string &marker) {
-      for (std::size_t i = 0; i < lines.size(); ++i)
-        {
-          const auto words = split(lines[i]);
-          if (!words.empty() && words[0] == marker)
-            return i;
-        }
-      return lines.size();
-    };
-    std::string nodes_begin = "$Nodes", nodes_end = "$EndNodes", elements_begin = "$Elements",
-                elements_end = "$EndElements";
+    explicit GmshFormat(const std::vector<std::string> &lines)
     {
       Cursor cursor(lines, 0);
       if (!cursor.next())
-        return "";
+        return;
       if (cursor.words[0] == "$NOD")
         {
           version        = 1;
@@ -423,60 +414,102 @@ namespace FoslsContact
           if (v.empty() && cursor.next())
             v = cursor.words[0];
           version = v.empty() ? 0 : v[0] == '2' ? 2 : v == "4" || v == "4.0" ? 40 : 41;
-          format  = v;
+          header  = v;
         }
-      if (version == 0)
-        return "";
+      another = " (is its body of another format than its header's " + header + "?)";
     }
-    const std::string another =
-      " (is its body of another format than its header's " + format + "?)";
 
-    // the counts at the beginning of a section and of an entity block
-    const std::vector<std::string> head = {"the number of " + std::string("%s") + " alone",
-                                           "2 integers (entity blocks, %s)",
-                                           "4 integers (entity blocks, %s, smallest and "
-                                           "largest tag)"};
-    auto section_head = [&](const std::string &items) {
-      std::string text = head[version < 40 ? 0 : version == 40 ? 1 : 2];
-      text.replace(text.find("%s"), 2, items);
-      return text;
-    };
-    const std::string block_head =
-      version == 40 ? "4 integers (entity tag, dimension, %s)" :
-                      "4 integers (dimension, entity tag, %s)";
-    auto block = [&](const std::string &what) {
-      std::string text = block_head;
-      text.replace(text.find("%s"), 2, what);
-      return text;
-    };
+    /** 1, 2, 40 or 41; 0: no Gmsh file. */
+    int version = 0;
+    /** The header's version, for messages. */
+    std::string header = "1";
+    std::string nodes_begin = "$Nodes", nodes_end = "$EndNodes", elements_begin = "$Elements",
+                elements_end = "$EndElements";
+    /** The end of a message on a body that may not be of the header's format. */
+    std::string another;
 
-    if (version >= 40)
+    /** The number of counts at the beginning of a section. */
+    std::size_t
+    n_counts() const
+    {
+      return version < 40 ? 1 : version == 40 ? 2 : 4;
+    }
+
+    /** What the counts at the beginning of a section of @p items are. */
+    std::string
+    section_head(const std::string &items) const
+    {
+      return version < 40  ? "the number of " + items + " alone" :
+             version == 40 ? "2 integers (entity blocks, " + items + ")" :
+                             "4 integers (entity blocks, " + items + ", smallest and largest tag)";
+    }
+
+    /** What the counts at the beginning of an entity block of @p what are. */
+    std::string
+    block(const std::string &what) const
+    {
+      return version == 40 ? "4 integers (entity tag, dimension, " + what + ")" :
+                             "4 integers (dimension, entity tag, " + what + ")";
+    }
+
+    /** The line of @p lines that begins with @p marker, or lines.size(). */
+    static std::size_t
+    find(const std::vector<std::string> &lines, const std::string &marker)
+    {
+      for (std::size_t i = 0; i < lines.size(); ++i)
+        {
+          const auto words = split(lines[i]);
+          if (!words.empty() && words[0] == marker)
+            return i;
+        }
+      return lines.size();
+    }
+  };
+
+
+  std::string
+  MeshCheck::read_gmsh(const std::vector<std::string> &lines)
+  {
+    const GmshFormat format(lines);
+    if (format.version == 0)
+      return "";
+    if (format.version >= 40)
       {
-        const std::string why = read_gmsh_entities(lines, version);
+        const std::string why = read_gmsh_entities(lines, format.version);
         if (!why.empty())
           return why;
       }
+    const std::string why = read_gmsh_nodes(lines, format);
+    if (!why.empty())
+      return why;
+    return read_gmsh_elements(lines, format);
+  }
 
-    // nodes
-    const std::size_t nodes_at = find(nodes_begin);
+
+  std::string
+  MeshCheck::read_gmsh_nodes(const std::vector<std::string> &lines, const GmshFormat &format)
+  {
+    const int          version     = format.version;
+    const std::string &nodes_begin = format.nodes_begin, &nodes_end = format.nodes_end;
+    const std::string &another     = format.another;
+    const std::size_t  nodes_at    = GmshFormat::find(lines, nodes_begin);
     if (nodes_at == lines.size())
       return "it has no " + nodes_begin + " section";
     Cursor            cursor(lines, '$', nodes_at + 1);
     std::vector<long> values;
-    const std::size_t numbers = version < 40 ? 1 : version == 40 ? 2 : 4;
-    if (!cursor.next() || !counts(cursor, numbers, values))
-      return line_of(cursor.number) + "the " + nodes_begin + " section of a Gmsh " + format +
-             " file begins with " + section_head("nodes") + ", not " +
+    if (!cursor.next() || !counts(cursor, format.n_counts(), values))
+      return line_of(cursor.number) + "the " + nodes_begin + " section of a Gmsh " +
+             format.header + " file begins with " + format.section_head("nodes") + ", not " +
              quote(cursor.number <= lines.size() && cursor.number > 0 ?
                      lines[cursor.number - 1] :
                      "") +
              another;
-    const std::size_t n_nodes = values[version < 40 ? 0 : 1];
+    const std::size_t n_nodes  = values[version < 40 ? 0 : 1];
     const std::size_t n_blocks = version < 40 ? 1 : values[0];
     std::size_t       k        = 0;
     for (std::size_t b = 0; b < n_blocks; ++b)
       {
-        std::size_t in_block = n_nodes;
+        std::size_t in_block   = n_nodes;
         bool        parametric = false;
         if (version >= 40)
           {
@@ -484,7 +517,7 @@ namespace FoslsContact
               return cursor.ended(k, n_nodes, "nodes", nodes_begin);
             if (!counts(cursor, 4, values))
               return line_of(cursor.number) + "an entity block of the " + nodes_begin +
-                     " section begins with " + block("parametric, nodes") + ", not " +
+                     " section begins with " + format.block("parametric, nodes") + ", not " +
                      quote(lines[cursor.number - 1]) + another;
             parametric = values[2] != 0;
             in_block   = values[3];
@@ -492,8 +525,7 @@ namespace FoslsContact
         if (k + in_block > n_nodes)
           return line_of(cursor.number) + "the entity blocks of the " + nodes_begin +
                  " section hold more nodes than its " + std::to_string(n_nodes) + another;
-        std::vector<long>         tags;
-        std::vector<unsigned int> tag_lines;
+        std::vector<long> tags;
         if (version == 41)
           for (std::size_t i = 0; i < in_block; ++i)
             {
@@ -539,19 +571,29 @@ namespace FoslsContact
                "the file ends in its " + nodes_begin + " section, before " + nodes_end :
                line_of(cursor.number) + quote(cursor.words[0]) + " where " + nodes_end +
                  " ends the " + nodes_begin + " section";
+    return "";
+  }
 
-    // elements
-    const std::size_t elements_at = find(elements_begin);
+
+  std::string
+  MeshCheck::read_gmsh_elements(const std::vector<std::string> &lines, const GmshFormat &format)
+  {
+    const int          version        = format.version;
+    const std::string &elements_begin = format.elements_begin,
+                      &elements_end   = format.elements_end;
+    const std::string &another        = format.another;
+    const std::size_t  elements_at    = GmshFormat::find(lines, elements_begin);
     if (elements_at == lines.size())
       return "it has no " + elements_begin + " section";
-    cursor.at = elements_at + 1;
-    if (!cursor.next() || !counts(cursor, numbers, values))
-      return line_of(cursor.number) + "the " + elements_begin + " section of a Gmsh " + format +
-             " file begins with " + section_head("elements") + ", not " +
-             quote(cursor.number > 0 ? lines[cursor.number - 1] : "") + another;
-    const std::size_t n_elements = values[version < 40 ? 0 : 1];
+    Cursor            cursor(lines, '$', elements_at + 1);
+    std::vector<long> values;
+    if (!cursor.next() || !counts(cursor, format.n_counts(), values))
+      return line_of(cursor.number) + "the " + elements_begin + " section of a Gmsh " +
+             format.header + " file begins with " + format.section_head("elements") +
+             ", not " + quote(cursor.number > 0 ? lines[cursor.number - 1] : "") + another;
+    const std::size_t n_elements       = values[version < 40 ? 0 : 1];
     const std::size_t n_element_blocks = version < 40 ? 1 : values[0];
-    k                                  = 0;
+    std::size_t       k                = 0;
     for (std::size_t b = 0; b < n_element_blocks; ++b)
       {
         std::size_t in_block = n_elements;
@@ -562,8 +604,8 @@ namespace FoslsContact
               return cursor.ended(k, n_elements, "elements", elements_begin);
             if (!counts(cursor, 4, values))
               return line_of(cursor.number) + "an entity block of the " + elements_begin +
-                     " section begins with " + block("element type, elements") + ", not " +
-                     quote(lines[cursor.number - 1]) + another;
+                     " section begins with " + format.block("element type, elements") +
+                     ", not " + quote(lines[cursor.number - 1]) + another;
             type     = values[2];
             in_block = values[3];
           }
@@ -574,55 +616,10 @@ namespace FoslsContact
           {
             if (!cursor.next())
               return cursor.ended(k, n_elements, "elements", elements_begin);
-            const auto &words = cursor.words;
-            const std::string what =
-              line_of(cursor.number) + "the element line " + quote(lines[cursor.number - 1]);
-            // the element's number and the position of its first node
-            long        label = 0;
-            std::size_t first = 1;
-            if (!integer(words[0], label))
-              return what + " does not begin with an element number" + another;
-            if (version < 40)
-              {
-                // 1: number type reg-phys reg-elem n-nodes nodes...
-                // 2: number type n-tags tags... nodes...
-                long n = 0;
-                if (words.size() < (version == 1 ? 5u : 3u) || !integer(words[1], type) ||
-                    !integer(words[version == 1 ? 4 : 2], n) || n < 0)
-                  return what + " does not begin with " +
-                         (version == 1 ? "'number type region element nodes'" :
-                                         "'number type tags'") +
-                         another;
-                first = version == 1 ? 5 : 3 + n;
-                if (first > words.size() || (version == 1 && first + n != words.size()))
-                  return what + " does not hold the " + std::to_string(n) +
-                         (version == 1 ? " nodes" : " tags") + " it announces" + another;
-                // (the physical tag: the region of format 1, the first tag of 2)
-                long tag = 0;
-                if ((version == 1 || n > 0) && integer(words[version == 1 ? 2 : 3], tag))
-                  {
-                    const std::map<long, unsigned int> dims = {
-                      {Kind::point, 0}, {Kind::line, 1}, {Kind::triangle, 2},
-                      {Kind::quadrilateral, 2}, {Kind::tetrahedron, 3}, {Kind::hexahedron, 3}};
-                    const std::string why = physical_tag_problem(
-                      tag, dims.count(type) ? dims.at(type) : 0, what + " has the physical tag");
-                    if (!why.empty())
-                      return why;
-                  }
-              }
-            if (type == Kind::point || type == Kind::line || type == Kind::triangle ||
-                type == Kind::quadrilateral || type == Kind::tetrahedron ||
-                type == Kind::hexahedron)
-              {
-                const std::string why =
-                  add_cell(static_cast<Kind>(type),
-                           std::vector<std::string>(words.begin() + first, words.end()),
-                           label,
-                           cursor.number);
-                if (!why.empty())
-                  return why;
-              }
-            // (elements of other types: deal.II's reader names them)
+            const std::string why = read_gmsh_element(
+              cursor.words, lines[cursor.number - 1], cursor.number, format, type);
+            if (!why.empty())
+              return why;
           }
       }
     if (cursor.next())
@@ -634,6 +631,61 @@ namespace FoslsContact
                "the file ends in its " + elements_begin + " section, before " + elements_end :
                line_of(cursor.number) + quote(cursor.words[0]) + " where " + elements_end +
                  " ends the " + elements_begin + " section";
+    return "";
+  }
+
+
+  std::string
+  MeshCheck::read_gmsh_element(const std::vector<std::string> &words,
+                               const std::string &             line,
+                               const unsigned int              line_number,
+                               const GmshFormat &              format,
+                               long                            type)
+  {
+    const int         version = format.version;
+    const std::string what    = line_of(line_number) + "the element line " + quote(line);
+    // the element's number and the position of its first node
+    long        label = 0;
+    std::size_t first = 1;
+    if (!integer(words[0], label))
+      return what + " does not begin with an element number" + format.another;
+    if (version < 40)
+      {
+        // 1: number type reg-phys reg-elem n-nodes nodes...
+        // 2: number type n-tags tags... nodes...
+        long n = 0;
+        if (words.size() < (version == 1 ? 5u : 3u) || !integer(words[1], type) ||
+            !integer(words[version == 1 ? 4 : 2], n) || n < 0)
+          return what + " does not begin with " +
+                 (version == 1 ? "'number type region element nodes'" : "'number type tags'") +
+                 format.another;
+        first = version == 1 ? 5 : 3 + n;
+        if (first > words.size() || (version == 1 && first + n != words.size()))
+          return what + " does not hold the " + std::to_string(n) +
+                 (version == 1 ? " nodes" : " tags") + " it announces" + format.another;
+        // (the physical tag: the region of format 1, the first tag of 2)
+        long tag = 0;
+        if ((version == 1 || n > 0) && integer(words[version == 1 ? 2 : 3], tag))
+          {
+            const std::map<long, unsigned int> dims = {{Kind::point, 0},
+                                                       {Kind::line, 1},
+                                                       {Kind::triangle, 2},
+                                                       {Kind::quadrilateral, 2},
+                                                       {Kind::tetrahedron, 3},
+                                                       {Kind::hexahedron, 3}};
+            const std::string                  why = physical_tag_problem(
+              tag, dims.count(type) ? dims.at(type) : 0, what + " has the physical tag");
+            if (!why.empty())
+              return why;
+          }
+      }
+    if (type == Kind::point || type == Kind::line || type == Kind::triangle ||
+        type == Kind::quadrilateral || type == Kind::tetrahedron || type == Kind::hexahedron)
+      return add_cell(static_cast<Kind>(type),
+                      std::vector<std::string>(words.begin() + first, words.end()),
+                      label,
+                      line_number);
+    // (elements of other types: deal.II's reader names them)
     return "";
   }
 
@@ -1076,40 +1128,116 @@ namespace FoslsContact
   }
 
 
-  std::string
-  MeshCheck::check_geometry(const std::vector<unsigned int> &mesh_cells) const
+  /**
+   * The points check_geometry() tests against the cells: the nodes of the
+   * cells and the cells' centres (owner: the node's index, or nodes.size()
+   * + the cell's position in mesh_cells), each cell's corners and size, and
+   * the points sorted into boxes of about the mean cell size, so that a
+   * cell is tested against the points near it only.
+   */
+  struct MeshCheck::TestPoints
   {
-    // the points to test: the nodes of the cells, and the cells' centres
-    // (as node index nodes.size() + position in mesh_cells)
+    std::vector<Point3>              positions;
+    std::vector<unsigned int>        owner;
+    std::vector<std::vector<Point3>> corners;
+    std::vector<double>              sizes;
+    Point3                           lower = {{0, 0, 0}}, upper = {{0, 0, 0}};
+    double                           mean_size = 0;
+
+    /** At most this many boxes along an axis. */
+    static constexpr std::int64_t most = 1 << 20;
+    std::int64_t                  boxes[3] = {1, 1, 1};
+    std::unordered_map<std::int64_t, std::vector<unsigned int>> grid;
+
+    /** The box of coordinate @p x along axis @p d. */
+    std::int64_t
+    box(const double x, const unsigned int d) const
+    {
+      const double b = std::floor((x - lower[d]) / mean_size);
+      return std::int64_t(std::max(0., std::min(double(boxes[d] - 1), b)));
+    }
+
+    static std::int64_t
+    key(const std::int64_t i, const std::int64_t j, const std::int64_t k)
+    {
+      return i + most * (j + most * k);
+    }
+
+    /** Sort the positions into boxes of about mean_size. */
+    void
+    fill_grid(const unsigned int dim)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        boxes[d] = std::int64_t(std::min<double>(most, (upper[d] - lower[d]) / mean_size + 1));
+      for (unsigned int p = 0; p < positions.size(); ++p)
+        grid[key(box(positions[p][0], 0),
+                 box(positions[p][1], 1),
+                 dim == 3 ? box(positions[p][2], 2) : 0)]
+          .push_back(p);
+    }
+
+    /**
+     * The points in the boxes of the box [@p low, @p high]: all of them in
+     * order where that spans more boxes than there are points.
+     */
+    std::vector<unsigned int>
+    near(const Point3 &low, const Point3 &high, const unsigned int dim) const
+    {
+      std::int64_t from[3] = {0, 0, 0}, to[3] = {0, 0, 0};
+      double       n_boxes = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          from[d] = box(low[d], d);
+          to[d]   = box(high[d], d);
+          n_boxes *= to[d] - from[d] + 1;
+        }
+      std::vector<unsigned int> candidates;
+      if (n_boxes > positions.size())
+        for (unsigned int p = 0; p < positions.size(); ++p)
+          candidates.push_back(p);
+      else
+        for (auto a = from[0]; a <= to[0]; ++a)
+          for (auto b = from[1]; b <= to[1]; ++b)
+            for (auto c = from[2]; c <= to[2]; ++c)
+              {
+                const auto found = grid.find(key(a, b, c));
+                if (found != grid.end())
+                  candidates.insert(candidates.end(), found->second.begin(), found->second.end());
+              }
+      return candidates;
+    }
+  };
+
+
+  MeshCheck::TestPoints
+  MeshCheck::test_points(const std::vector<unsigned int> &mesh_cells) const
+  {
+    TestPoints points;
     std::vector<bool> used(nodes.size(), false);
     for (const auto c : mesh_cells)
       for (const auto v : cells[c].nodes)
         used[v] = true;
-    std::vector<Point3>       positions;
-    std::vector<unsigned int> owner; // node index, or nodes.size() + position in mesh_cells
-    std::vector<std::vector<Point3>> corners(mesh_cells.size());
-    std::vector<double>              sizes(mesh_cells.size());
-    Point3 lower = {{0, 0, 0}}, upper = {{0, 0, 0}};
-    bool   first = true;
+    points.corners.resize(mesh_cells.size());
+    points.sizes.resize(mesh_cells.size());
+    bool first = true;
     for (unsigned int v = 0; v < nodes.size(); ++v)
       if (used[v])
         {
-          positions.push_back(nodes[v].x);
-          owner.push_back(v);
+          points.positions.push_back(nodes[v].x);
+          points.owner.push_back(v);
           for (unsigned int d = 0; d < dim; ++d)
             {
-              lower[d] = first ? nodes[v].x[d] : std::min(lower[d], nodes[v].x[d]);
-              upper[d] = first ? nodes[v].x[d] : std::max(upper[d], nodes[v].x[d]);
+              points.lower[d] = first ? nodes[v].x[d] : std::min(points.lower[d], nodes[v].x[d]);
+              points.upper[d] = first ? nodes[v].x[d] : std::max(points.upper[d], nodes[v].x[d]);
             }
           first = false;
         }
-    double mean_size = 0;
     for (unsigned int i = 0; i < mesh_cells.size(); ++i)
       {
         Point3 centre = {{0, 0, 0}}, low = nodes[cells[mesh_cells[i]].nodes[0]].x, high = low;
         for (const auto v : cells[mesh_cells[i]].nodes)
           {
-            corners[i].push_back(nodes[v].x);
+            points.corners[i].push_back(nodes[v].x);
             for (unsigned int d = 0; d < dim; ++d)
               {
                 centre[d] += nodes[v].x[d] / cells[mesh_cells[i]].nodes.size();
@@ -1118,118 +1246,98 @@ namespace FoslsContact
               }
           }
         for (unsigned int d = 0; d < dim; ++d)
-          sizes[i] = std::max(sizes[i], high[d] - low[d]);
-        mean_size += sizes[i] / mesh_cells.size();
-        positions.push_back(centre);
-        owner.push_back(nodes.size() + i);
+          points.sizes[i] = std::max(points.sizes[i], high[d] - low[d]);
+        points.mean_size += points.sizes[i] / mesh_cells.size();
+        points.positions.push_back(centre);
+        points.owner.push_back(nodes.size() + i);
       }
+    return points;
+  }
 
-    // the points in boxes of about a cell's size
-    if (!(mean_size > 0) || !std::isfinite(mean_size))
+
+  std::string
+  MeshCheck::check_geometry(const std::vector<unsigned int> &mesh_cells) const
+  {
+    TestPoints points = test_points(mesh_cells);
+    if (!(points.mean_size > 0) || !std::isfinite(points.mean_size))
       return "";
-    constexpr std::int64_t most = 1 << 20;
-    std::int64_t           boxes[3] = {1, 1, 1};
-    for (unsigned int d = 0; d < dim; ++d)
-      boxes[d] = std::int64_t(std::min<double>(most, (upper[d] - lower[d]) / mean_size + 1));
-    auto box = [&](const double x, const unsigned int d) {
-      const double b = std::floor((x - lower[d]) / mean_size);
-      return std::int64_t(std::max(0., std::min(double(boxes[d] - 1), b)));
-    };
-    auto key = [](const std::int64_t i, const std::int64_t j, const std::int64_t k) {
-      return i + most * (j + most * k);
-    };
-    std::unordered_map<std::int64_t, std::vector<unsigned int>> grid;
-    for (unsigned int p = 0; p < positions.size(); ++p)
-      grid[key(box(positions[p][0], 0),
-               box(positions[p][1], 1),
-               dim == 3 ? box(positions[p][2], 2) : 0)]
-        .push_back(p);
-
-    const double tolerance = 1e-6;
+    points.fill_grid(dim);
     for (unsigned int i = 0; i < mesh_cells.size(); ++i)
       {
-        const Cell &cell = cells[mesh_cells[i]];
-        Point3      low = corners[i][0], high = low;
-        for (const auto &x : corners[i])
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              low[d]  = std::min(low[d], x[d] - tolerance * sizes[i]);
-              high[d] = std::max(high[d], x[d] + tolerance * sizes[i]);
-            }
-        std::int64_t from[3] = {0, 0, 0}, to[3] = {0, 0, 0};
-        double       n_boxes = 1;
+        const std::string why = points_in_cell(mesh_cells, points, i);
+        if (!why.empty())
+          return why;
+      }
+    return "";
+  }
+
+
+  std::string
+  MeshCheck::points_in_cell(const std::vector<unsigned int> &mesh_cells,
+                            const TestPoints &               points,
+                            const unsigned int               i) const
+  {
+    const double tolerance = 1e-6;
+    const Cell & cell      = cells[mesh_cells[i]];
+    const auto & corners   = points.corners[i];
+    const double size      = points.sizes[i];
+    Point3       low = corners[0], high = low;
+    for (const auto &x : corners)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          low[d]  = std::min(low[d], x[d] - tolerance * size);
+          high[d] = std::max(high[d], x[d] + tolerance * size);
+        }
+    for (const auto p : points.near(low, high, dim))
+      {
+        const auto &x    = points.positions[p];
+        bool        near = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          near = near && x[d] >= low[d] && x[d] <= high[d];
+        const unsigned int owner = points.owner[p];
+        if (!near || owner == nodes.size() + i ||
+            std::find(cell.nodes.begin(), cell.nodes.end(), owner) != cell.nodes.end())
+          continue;
+        Point3 xi;
+        if (!reference_point(corners, dim, x, size, xi))
+          continue;
+        unsigned int on = 0;
+        bool         in = true;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            from[d] = box(low[d], d);
-            to[d]   = box(high[d], d);
-            n_boxes *= to[d] - from[d] + 1;
+            in = in && xi[d] >= -tolerance && xi[d] <= 1 + tolerance;
+            on += std::abs(xi[d]) <= tolerance || std::abs(xi[d] - 1) <= tolerance;
           }
-        std::vector<unsigned int> candidates;
-        if (n_boxes > positions.size())
-          for (unsigned int p = 0; p < positions.size(); ++p)
-            candidates.push_back(p);
-        else
-          for (auto a = from[0]; a <= to[0]; ++a)
-            for (auto b = from[1]; b <= to[1]; ++b)
-              for (auto c = from[2]; c <= to[2]; ++c)
-                {
-                  const auto found = grid.find(key(a, b, c));
-                  if (found != grid.end())
-                    candidates.insert(candidates.end(),
-                                      found->second.begin(),
-                                      found->second.end());
-                }
-        for (const auto p : candidates)
+        if (!in)
+          continue;
+        if (owner >= nodes.size())
+          return "has overlapping cells: " + describe(cells[mesh_cells[owner - nodes.size()]]) +
+                 " and " + describe(cell) + " overlap (the centre of one lies in the other)";
+        const Node &node = nodes[owner];
+        if (on == dim)
           {
-            const auto &x = positions[p];
-            bool        near = true;
-            for (unsigned int d = 0; d < dim; ++d)
-              near = near && x[d] >= low[d] && x[d] <= high[d];
-            if (!near || owner[p] == nodes.size() + i ||
-                std::find(cell.nodes.begin(), cell.nodes.end(), owner[p]) != cell.nodes.end())
-              continue;
-            Point3 xi;
-            if (!reference_point(corners[i], dim, x, sizes[i], xi))
-              continue;
-            unsigned int on = 0;
-            bool         in = true;
-            for (unsigned int d = 0; d < dim; ++d)
+            // at a corner: which one
+            unsigned int nearest = cell.nodes[0];
+            for (const auto v : cell.nodes)
               {
-                in = in && xi[d] >= -tolerance && xi[d] <= 1 + tolerance;
-                on += std::abs(xi[d]) <= tolerance || std::abs(xi[d] - 1) <= tolerance;
-              }
-            if (!in)
-              continue;
-            if (owner[p] >= nodes.size())
-              return "has overlapping cells: " +
-                     describe(cells[mesh_cells[owner[p] - nodes.size()]]) + " and " +
-                     describe(cell) + " overlap (the centre of one lies in the other)";
-            const Node &node = nodes[owner[p]];
-            if (on == dim)
-              {
-                // at a corner: which one
-                unsigned int nearest = cell.nodes[0];
-                for (const auto v : cell.nodes)
+                double a = 0, b = 0;
+                for (unsigned int d = 0; d < dim; ++d)
                   {
-                    double a = 0, b = 0;
-                    for (unsigned int d = 0; d < dim; ++d)
-                      {
-                        a += std::pow(nodes[v].x[d] - x[d], 2);
-                        b += std::pow(nodes[nearest].x[d] - x[d], 2);
-                      }
-                    if (a < b)
-                      nearest = v;
+                    a += std::pow(nodes[v].x[d] - x[d], 2);
+                    b += std::pow(nodes[nearest].x[d] - x[d], 2);
                   }
-                return "has the point " + format(x, dim) + " twice, as " +
-                       describe(nodes[nearest]) + " and " + describe(node) +
-                       ": the cells are not connected there (merge the two " + node_word + "s)";
+                if (a < b)
+                  nearest = v;
               }
-            if (on > 0)
-              return "is not conforming: " + describe(node) + " lies on " +
-                     (dim == 2 ? "an edge" : "the boundary") + " of " + describe(cell) +
-                     " without being one of its " + node_word + "s (a hanging node)";
-            return "has overlapping cells: " + describe(node) + " lies inside " + describe(cell);
+            return "has the point " + format(x, dim) + " twice, as " + describe(nodes[nearest]) +
+                   " and " + describe(node) +
+                   ": the cells are not connected there (merge the two " + node_word + "s)";
           }
+        if (on > 0)
+          return "is not conforming: " + describe(node) + " lies on " +
+                 (dim == 2 ? "an edge" : "the boundary") + " of " + describe(cell) +
+                 " without being one of its " + node_word + "s (a hanging node)";
+        return "has overlapping cells: " + describe(node) + " lies inside " + describe(cell);
       }
     return "";
   }

@@ -37,6 +37,21 @@ namespace FoslsContact
     : geometry(prm.geometry)
     , dirichlet_masks(prm.boundary_conditions.dirichlet_components)
   {
+    read_mesh_file();
+    set_reference_units(prm);
+    const auto &bc = prm.boundary_conditions;
+    dirichlet_ids.insert(bc.dirichlet_ids.begin(), bc.dirichlet_ids.end());
+    neumann_ids.insert(bc.neumann_ids.begin(), bc.neumann_ids.end());
+    contact_ids.insert(bc.contact_ids.begin(), bc.contact_ids.end());
+    read_constants(prm.data.constants);
+    make_data_functions(prm);
+  }
+
+
+  template <int dim>
+  void
+  Scene<dim>::read_mesh_file()
+  {
     // (every process reads the mesh file: one that cannot, on a node where
     // the file is not, stops them all, CollectiveError)
     if (geometry.shape == Parameters::Geometry::Shape::file)
@@ -56,6 +71,13 @@ namespace FoslsContact
           }
         Parameters::check_resolvable(size, distance, "the size of the " + mesh_file->name());
       });
+  }
+
+
+  template <int dim>
+  void
+  Scene<dim>::set_reference_units(const Parameters::AllParameters &prm)
+  {
     reference.length = reference_length(prm);
     reference.stress =
       prm.scaling.reference_stress > 0 ? prm.scaling.reference_stress : prm.material.mu;
@@ -81,15 +103,15 @@ namespace FoslsContact
     dimensionless_material.mu /= reference.stress;
     dimensionless_material.lambda /= reference.stress;
     dimensionless_material.youngs_modulus /= reference.stress;
+  }
 
-    const auto &bc = prm.boundary_conditions;
-    dirichlet_ids.insert(bc.dirichlet_ids.begin(), bc.dirichlet_ids.end());
-    neumann_ids.insert(bc.neumann_ids.begin(), bc.neumann_ids.end());
-    contact_ids.insert(bc.contact_ids.begin(), bc.contact_ids.end());
 
+  template <int dim>
+  void
+  Scene<dim>::read_constants(const std::string &definitions)
+  {
     constants["pi"] = numbers::PI;
-    for (const auto &entry :
-         Utilities::split_string_list(prm.data.constants, ','))
+    for (const auto &entry : Utilities::split_string_list(definitions, ','))
       {
         const auto pair = Utilities::split_string_list(entry, '=');
         AssertThrow(pair.size() == 2,
@@ -121,7 +143,13 @@ namespace FoslsContact
                                    "' is not a number"));
           }
       }
+  }
 
+
+  template <int dim>
+  void
+  Scene<dim>::make_data_functions(const Parameters::AllParameters &prm)
+  {
     // A data expression is parsed, and its components counted, only where
     // the scene uses it: a scene copied from a 2D one keeps its 2D
     // traction where it has no Neumann boundary. The values and tractions

@@ -167,22 +167,62 @@ namespace FoslsContact
      */
     constexpr unsigned int block_rows = 16384;
 
-    /**
-     * The work arrays of a thread: a dense row of length n_coarse_local,
-     * kept zero between rows, and for every coarse column the fine row
-     * that last reached it (invalid between rows).
-     */
-    struct ProductWork
-    {
-      std::vector<double>       row;
-      std::vector<unsigned int> reached_by;
-    };
-
     /** The message of an entry of the product outside the coarse pattern. */
     const char *const outside_pattern =
       "GalerkinProduct: a coarse operator entry outside the coupling pattern of the "
       "coarse cells";
   } // namespace
+
+
+  /**
+   * The work arrays of a thread: a dense row of length n_coarse_local,
+   * kept zero between rows, and for every coarse column the fine row
+   * that last reached it (invalid between rows).
+   */
+  struct GalerkinProduct::ProductWork
+  {
+    std::vector<double>       row;
+    std::vector<unsigned int> reached_by;
+  };
+
+
+  /**
+   * The state of one compute() across its blocks of fine rows: the
+   * threads' work arrays, the block's rows of A P, and per coarse column
+   * how far down its fine rows the sums have come.
+   */
+  struct GalerkinProduct::ProductState
+  {
+    ProductState(const std::vector<std::size_t> &transpose_start,
+                 const unsigned int              n_coarse_local,
+                 const std::size_t               n_extra)
+      : thread_work(
+          ProductWork{std::vector<double>(n_coarse_local, 0.),
+                      std::vector<unsigned int>(n_coarse_local, numbers::invalid_unsigned_int)})
+      , next(transpose_start.begin(), transpose_start.end() - 1)
+      , reached_in_block(n_coarse_local, numbers::invalid_unsigned_int)
+      , extra_values(n_extra, 0.)
+    {}
+
+    Threads::ThreadLocalStorage<ProductWork> thread_work;
+    /**
+     * next[j]: the first entry of column j of P whose fine row is in the
+     * current block or a later one (a column lists its rows in increasing
+     * order)
+     */
+    std::vector<std::size_t> next;
+    /** The coarse rows the current block reaches (marked by its first row). */
+    std::vector<unsigned int> reached_in_block, reached;
+    /**
+     * The block's rows of A P: row r - r0 has block_length[r - r0] entries
+     * from block_start[r - r0] on.
+     */
+    std::vector<std::size_t>  block_start;
+    std::vector<unsigned int> block_length, block_columns;
+    std::vector<double>       block_values;
+    /** The sums outside the result's pattern (extra_columns): exact zeros. */
+    std::vector<double> extra_values;
+  };
 
 
   void
@@ -215,148 +255,160 @@ namespace FoslsContact
       },
       1000);
     std::fill(ghost_values.begin(), ghost_values.end(), 0.);
-    std::vector<double> extra_values(extra_columns.size(), 0.);
+    ProductState state(transpose_start, n_coarse_local, extra_columns.size());
 
-    Threads::ThreadLocalStorage<ProductWork> thread_work(
-      ProductWork{std::vector<double>(n_coarse_local, 0.),
-                  std::vector<unsigned int>(n_coarse_local, numbers::invalid_unsigned_int)});
-
-    // the partial sums of coarse row j into (load) and out of a dense row:
-    // an owned row's pattern and outside entries, or a ghost row's parts
-    auto move_sums = [&](const unsigned int j, std::vector<double> &row, const bool load) {
-      auto move = [&](double &stored, const unsigned int c) {
-        if (load)
-          row[c] = stored;
-        else
-          {
-            stored = row[c];
-            row[c] = 0.;
-          }
-      };
-      if (j < n_coarse_owned)
-        {
-          for (auto e = galerkin.begin(j); e != galerkin.end(j); ++e)
-            if (load)
-              row[e->column()] = e->value();
-            else
-              {
-                e->value()       = row[e->column()];
-                row[e->column()] = 0.;
-              }
-          for (std::size_t k = extra_start[j]; k < extra_start[j + 1]; ++k)
-            move(extra_values[k], extra_columns[k]);
-        }
-      else
-        {
-          const std::size_t r =
-            std::lower_bound(ghost_row.begin(), ghost_row.end(), j) - ghost_row.begin();
-          for (std::size_t k = ghost_start[r]; k < ghost_start[r + 1]; ++k)
-            move(ghost_values[k], ghost_columns[k]);
-        }
-    };
-
-    // next[j]: the first entry of column j of P whose fine row is in the
-    // current block or a later one (a column lists its rows in increasing
-    // order)
-    std::vector<std::size_t>  next(transpose_start.begin(), transpose_start.end() - 1);
-    std::vector<unsigned int> reached_in_block(n_coarse_local, numbers::invalid_unsigned_int);
-    std::vector<unsigned int> reached;
-    std::vector<std::size_t>  block_start;
-    std::vector<unsigned int> block_length, block_columns;
-    std::vector<double>       block_values;
-    const auto                n_fine = static_cast<unsigned int>(product_row_length.size());
+    const auto n_fine = static_cast<unsigned int>(product_row_length.size());
     for (unsigned int r0 = 0; r0 < n_fine; r0 += block_rows)
       {
         const unsigned int r1 = std::min(n_fine, r0 + block_rows);
-        block_start.assign(1, 0);
-        for (unsigned int r = r0; r < r1; ++r)
-          block_start.push_back(block_start.back() + product_row_length[r]);
-        block_length.resize(r1 - r0);
-        block_columns.resize(block_start.back());
-        block_values.resize(block_start.back());
-
-        // the block's rows of A P, each summed over the nonzeros of A's
-        // row in their order
-        for_subranges(
-          r0,
-          r1,
-          [&](const unsigned int begin, const unsigned int end) {
-            ProductWork &w = thread_work.get();
-            for (unsigned int r = begin; r < end; ++r)
-              {
-                unsigned int *     columns = block_columns.data() + block_start[r - r0];
-                double *           values  = block_values.data() + block_start[r - r0];
-                const unsigned int room    = product_row_length[r];
-                unsigned int       n       = 0;
-                for (auto a = A.begin(r); a != A.end(r); ++a)
-                  if (a->value() != 0.)
-                    for (auto p = P.begin(a->column()); p != P.end(a->column()); ++p)
-                      {
-                        const unsigned int c = p->column();
-                        if (w.reached_by[c] != r)
-                          {
-                            AssertThrow(n < room,
-                                        ExcMessage("GalerkinProduct: A or P is not on the "
-                                                   "pattern given to initialize()"));
-                            w.reached_by[c] = r;
-                            columns[n++]    = c;
-                          }
-                        w.row[c] += a->value() * P_values[p->global_index()];
-                      }
-                for (unsigned int q = 0; q < n; ++q)
-                  {
-                    values[q]                = w.row[columns[q]];
-                    w.row[columns[q]]        = 0.;
-                    w.reached_by[columns[q]] = numbers::invalid_unsigned_int;
-                  }
-                block_length[r - r0] = n;
-              }
-          },
-          200);
-
-        // their parts of P^T (A P), added to every coarse row they reach
-        reached.clear();
-        for (unsigned int r = r0; r < r1; ++r)
-          for (auto p = P.begin(r); p != P.end(r); ++p)
-            if (reached_in_block[p->column()] != r0)
-              {
-                reached_in_block[p->column()] = r0;
-                reached.push_back(p->column());
-              }
-        for_subranges(
-          0u,
-          static_cast<unsigned int>(reached.size()),
-          [&](const unsigned int begin, const unsigned int end) {
-            std::vector<double> &row = thread_work.get().row;
-            for (unsigned int i = begin; i < end; ++i)
-              {
-                const unsigned int j = reached[i];
-                move_sums(j, row, true);
-                std::size_t k = next[j];
-                for (; k < transpose_start[j + 1] && transpose_row[k] < r1; ++k)
-                  {
-                    const double p = P_values[transpose_position[k]];
-                    if (p != 0.)
-                      {
-                        const unsigned int b = transpose_row[k] - r0;
-                        for (std::size_t q = block_start[b]; q < block_start[b] + block_length[b];
-                             ++q)
-                          row[block_columns[q]] += p * block_values[q];
-                      }
-                  }
-                next[j] = k;
-                move_sums(j, row, false);
-              }
-          },
-          64);
+        multiply_block(A, P, r0, r1, state);
+        add_block(P, r0, r1, galerkin, state);
       }
 
     // a nonzero outside the result's pattern is an error
-    for (const double value : extra_values)
+    for (const double value : state.extra_values)
       {
         AssertThrow(value == 0., ExcMessage(outside_pattern));
       }
     add_ghost_parts(galerkin);
+  }
+
+
+  void
+  GalerkinProduct::multiply_block(const SparseMatrix<double> &A,
+                                  const SparseMatrix<double> &P,
+                                  const unsigned int          r0,
+                                  const unsigned int          r1,
+                                  ProductState &              state) const
+  {
+    state.block_start.assign(1, 0);
+    for (unsigned int r = r0; r < r1; ++r)
+      state.block_start.push_back(state.block_start.back() + product_row_length[r]);
+    state.block_length.resize(r1 - r0);
+    state.block_columns.resize(state.block_start.back());
+    state.block_values.resize(state.block_start.back());
+
+    // each row summed over the nonzeros of A's row in their order
+    for_subranges(
+      r0,
+      r1,
+      [&](const unsigned int begin, const unsigned int end) {
+        ProductWork &w = state.thread_work.get();
+        for (unsigned int r = begin; r < end; ++r)
+          {
+            unsigned int *     columns = state.block_columns.data() + state.block_start[r - r0];
+            double *           values  = state.block_values.data() + state.block_start[r - r0];
+            const unsigned int room    = product_row_length[r];
+            unsigned int       n       = 0;
+            for (auto a = A.begin(r); a != A.end(r); ++a)
+              if (a->value() != 0.)
+                for (auto p = P.begin(a->column()); p != P.end(a->column()); ++p)
+                  {
+                    const unsigned int c = p->column();
+                    if (w.reached_by[c] != r)
+                      {
+                        AssertThrow(n < room,
+                                    ExcMessage("GalerkinProduct: A or P is not on the "
+                                               "pattern given to initialize()"));
+                        w.reached_by[c] = r;
+                        columns[n++]    = c;
+                      }
+                    w.row[c] += a->value() * P_values[p->global_index()];
+                  }
+            for (unsigned int q = 0; q < n; ++q)
+              {
+                values[q]                = w.row[columns[q]];
+                w.row[columns[q]]        = 0.;
+                w.reached_by[columns[q]] = numbers::invalid_unsigned_int;
+              }
+            state.block_length[r - r0] = n;
+          }
+      },
+      200);
+  }
+
+
+  void
+  GalerkinProduct::add_block(const SparseMatrix<double> &P,
+                             const unsigned int          r0,
+                             const unsigned int          r1,
+                             SparseMatrix<double> &      galerkin,
+                             ProductState &              state)
+  {
+    state.reached.clear();
+    for (unsigned int r = r0; r < r1; ++r)
+      for (auto p = P.begin(r); p != P.end(r); ++p)
+        if (state.reached_in_block[p->column()] != r0)
+          {
+            state.reached_in_block[p->column()] = r0;
+            state.reached.push_back(p->column());
+          }
+    for_subranges(
+      0u,
+      static_cast<unsigned int>(state.reached.size()),
+      [&](const unsigned int begin, const unsigned int end) {
+        std::vector<double> &row = state.thread_work.get().row;
+        for (unsigned int i = begin; i < end; ++i)
+          {
+            const unsigned int j = state.reached[i];
+            move_sums(j, row, true, galerkin, state.extra_values);
+            std::size_t k = state.next[j];
+            for (; k < transpose_start[j + 1] && transpose_row[k] < r1; ++k)
+              {
+                const double p = P_values[transpose_position[k]];
+                if (p != 0.)
+                  {
+                    const unsigned int b = transpose_row[k] - r0;
+                    for (std::size_t q = state.block_start[b];
+                         q < state.block_start[b] + state.block_length[b];
+                         ++q)
+                      row[state.block_columns[q]] += p * state.block_values[q];
+                  }
+              }
+            state.next[j] = k;
+            move_sums(j, row, false, galerkin, state.extra_values);
+          }
+      },
+      64);
+  }
+
+
+  void
+  GalerkinProduct::move_sums(const unsigned int    j,
+                             std::vector<double> & row,
+                             const bool            load,
+                             SparseMatrix<double> &galerkin,
+                             std::vector<double> & extra_values)
+  {
+    auto move = [&](double &stored, const unsigned int c) {
+      if (load)
+        row[c] = stored;
+      else
+        {
+          stored = row[c];
+          row[c] = 0.;
+        }
+    };
+    if (j < n_coarse_owned)
+      {
+        for (auto e = galerkin.begin(j); e != galerkin.end(j); ++e)
+          if (load)
+            row[e->column()] = e->value();
+          else
+            {
+              e->value()       = row[e->column()];
+              row[e->column()] = 0.;
+            }
+        for (std::size_t k = extra_start[j]; k < extra_start[j + 1]; ++k)
+          move(extra_values[k], extra_columns[k]);
+      }
+    else
+      {
+        const std::size_t r =
+          std::lower_bound(ghost_row.begin(), ghost_row.end(), j) - ghost_row.begin();
+        for (std::size_t k = ghost_start[r]; k < ghost_start[r + 1]; ++k)
+          move(ghost_values[k], ghost_columns[k]);
+      }
   }
 
   void

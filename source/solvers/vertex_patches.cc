@@ -127,56 +127,88 @@ namespace FoslsContact
   }
 
 
-  template <int dim>
-  VertexPatches<dim>::VertexPatches(const Discretization<dim> &discretization,
-                                    const unsigned int         l,
-                                    const int                  at_cells_of_level)
+  namespace
   {
-    // Vertex patches in the order of their VertexKey, and their colors. A
-    // process relaxes the patches with a DoF it owns; their vertices are
-    // vertices of its own cells, whose cells are all here.
-    const auto &dof_handler = discretization.get_dof_handler();
-    const auto &data        = discretization.level(l);
-    // arrays over the triangulation's vertex indices (of all its levels)
-    // rather than maps of this level's vertices: a lookup per cell vertex
-    // was most of this constructor's time
-    const unsigned int        n_vertices = dof_handler.get_triangulation().n_vertices();
-    constexpr unsigned int    none       = numbers::invalid_unsigned_int;
-    const std::vector<bool> & owned = data.owned_cell_vertices;
-    std::vector<bool>         relaxed(n_vertices, false);
-    std::vector<unsigned int> position(n_vertices, none); // in the key order
-    data.for_each_cell(dof_handler, [&](const auto &cell) {
-      if (at_cells_of_level < 0 || cell->level() == at_cells_of_level)
-        for (const unsigned int v : cell->vertex_indices())
-          relaxed[cell->vertex_index(v)] = true;
-    });
-    // every vertex of a cell here is an item of the level scheduling, a
-    // patch if a cell here owns it and it is relaxed; the DoFs each cell
-    // gives a patch are gathered in one array (counted, then filled), not
-    // in a container per patch, whose many small blocks outlived this
-    // constructor as holes in the heap
-    std::vector<std::pair<VertexKey<dim>, unsigned int>> order;
-    std::vector<std::size_t>                             start(n_vertices + 1, 0);
-    const PatchDofsInCell<dim> in_cell = patch_dofs_in_cell(dof_handler.get_fe());
-    data.for_each_cell(dof_handler, [&](const auto &cell) {
-      for (const unsigned int v : cell->vertex_indices())
-        {
-          const unsigned int vertex = cell->vertex_index(v);
-          if (position[vertex] == none)
-            {
-              position[vertex] = order.size();
-              order.emplace_back(vertex_key<dim>(cell, v), vertex);
-            }
-          if (owned[vertex] && relaxed[vertex])
-            start[vertex + 1] += in_cell[v].size();
-        }
-    });
-    for (unsigned int vertex = 0; vertex < n_vertices; ++vertex)
-      start[vertex + 1] += start[vertex];
-    std::vector<types::global_dof_index> gathered(start.back());
-    std::vector<types::global_dof_index> dofs;
+    constexpr unsigned int none = numbers::invalid_unsigned_int;
+
+    /**
+     * The vertices (triangulation indices, of all its levels) whose patches
+     * a level relaxes: all of the level's, or with @p at_cells_of_level
+     * those of the cells of that mesh level. Arrays over the
+     * triangulation's vertex indices rather than maps of this level's
+     * vertices: a lookup per cell vertex was most of the constructor's
+     * time.
+     */
+    template <int dim>
+    std::vector<bool>
+    relaxed_vertices(const DoFHandler<dim> &dof_handler,
+                     const LevelData<dim> & data,
+                     const int              at_cells_of_level)
     {
-      std::vector<std::size_t> next(start.begin(), start.end() - 1);
+      std::vector<bool> relaxed(dof_handler.get_triangulation().n_vertices(), false);
+      data.for_each_cell(dof_handler, [&](const auto &cell) {
+        if (at_cells_of_level < 0 || cell->level() == at_cells_of_level)
+          for (const unsigned int v : cell->vertex_indices())
+            relaxed[cell->vertex_index(v)] = true;
+      });
+      return relaxed;
+    }
+
+
+    /**
+     * The vertices of the cells here, the items of the level scheduling,
+     * in VertexKey order, and the DoFs each relaxed vertex that a cell here
+     * owns gathers from its cells (with repetitions). The DoFs are gathered
+     * in one array (counted, then filled), not in a container per patch,
+     * whose many small blocks outlived the constructor as holes in the
+     * heap.
+     */
+    template <int dim>
+    struct LevelVertices
+    {
+      LevelVertices(const DoFHandler<dim> &      dof_handler,
+                    const LevelData<dim> &       data,
+                    const std::vector<bool> &    relaxed,
+                    const PatchDofsInCell<dim> &in_cell);
+
+      /** The vertices with their keys, sorted by key. */
+      std::vector<std::pair<VertexKey<dim>, unsigned int>> order;
+      /** Of every vertex: its position in order (none if no cell here has it). */
+      std::vector<unsigned int> position;
+      /** The DoFs of vertex v's patch: gathered[start[v] .. start[v+1]). */
+      std::vector<std::size_t>             start;
+      std::vector<types::global_dof_index> gathered;
+    };
+
+
+    template <int dim>
+    LevelVertices<dim>::LevelVertices(const DoFHandler<dim> &      dof_handler,
+                                      const LevelData<dim> &       data,
+                                      const std::vector<bool> &    relaxed,
+                                      const PatchDofsInCell<dim> &in_cell)
+      : position(relaxed.size(), none)
+      , start(relaxed.size() + 1, 0)
+    {
+      const unsigned int       n_vertices = relaxed.size();
+      const std::vector<bool> &owned      = data.owned_cell_vertices;
+      data.for_each_cell(dof_handler, [&](const auto &cell) {
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const unsigned int vertex = cell->vertex_index(v);
+            if (position[vertex] == none)
+              {
+                position[vertex] = order.size();
+                order.emplace_back(vertex_key<dim>(cell, v), vertex);
+              }
+            if (owned[vertex] && relaxed[vertex])
+              start[vertex + 1] += in_cell[v].size();
+          }
+      });
+      for (unsigned int vertex = 0; vertex < n_vertices; ++vertex)
+        start[vertex + 1] += start[vertex];
+      gathered.resize(start.back());
+      std::vector<types::global_dof_index> dofs;
+      std::vector<std::size_t>             next(start.begin(), start.end() - 1);
       data.for_each_cell(dof_handler, [&](const auto &cell) {
         data.get_local_dofs(cell, dofs);
         for (const unsigned int v : cell->vertex_indices())
@@ -188,72 +220,108 @@ namespace FoslsContact
               });
           }
       });
-    }
-    // (distinct vertices have distinct keys; the index only makes the
-    // order independent of the cell order should two ever tie)
-    std::sort(order.begin(), order.end(), [](const auto &a, const auto &b) {
-      return a.first < b.first || (!(b.first < a.first) && a.second < b.second);
-    });
-    std::vector<types::global_dof_index> color_dof;
-    for (const auto &[k, vertex] : order)
-      {
-        position[vertex] = color_dof.size();
-        color_dof.push_back(data.vertex_dofs.at(vertex)[0]);
-      }
-    // Patches are coupled if their vertices share a cell. With hanging
-    // nodes eliminated (an adaptive mesh) a cell also couples the masters
-    // of its constrained DoFs, which lie on the coarse neighbour's face or
-    // edge: the patches of the master's vertex (a displacement DoF) or of
-    // its face's vertices (an RT DoF) are coupled with the cell's too.
-    std::map<types::global_dof_index, std::set<unsigned int>> master_vertices;
-    for (const auto &[dof, masters] : data.hanging)
-      for (const auto &master : masters)
-        master_vertices[master.first];
-    if (!master_vertices.empty())
-      data.for_each_cell(dof_handler, [&](const auto &cell) {
-        data.get_local_dofs(cell, dofs);
-        for (const unsigned int v : cell->vertex_indices())
-          for_patch_dofs_in_cell(in_cell, dofs, v, [&](const auto dof) {
-            const auto m = master_vertices.find(dof);
-            if (m != master_vertices.end())
-              m->second.insert(cell->vertex_index(v));
-          });
+      // (distinct vertices have distinct keys; the index only makes the
+      // order independent of the cell order should two ever tie)
+      std::sort(order.begin(), order.end(), [](const auto &a, const auto &b) {
+        return a.first < b.first || (!(b.first < a.first) && a.second < b.second);
       });
-    std::vector<std::vector<unsigned int>> coupled(order.size());
-    std::vector<unsigned int>              vertices;
-    data.for_each_cell(dof_handler, [&](const auto &cell) {
-      vertices.clear();
-      for (const unsigned int v : cell->vertex_indices())
-        vertices.push_back(cell->vertex_index(v));
-      if (!master_vertices.empty())
-        {
-          data.get_local_dofs(cell, dofs);
-          for (const auto dof : dofs)
-            {
-              const auto h = data.hanging.find(dof);
-              if (h != data.hanging.end())
-                for (const auto &master : h->second)
-                  for (const unsigned int w : master_vertices.at(master.first))
-                    vertices.push_back(w);
-            }
-        }
-      std::sort(vertices.begin(), vertices.end());
-      vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-      for (const unsigned int v : vertices)
-        for (const unsigned int w : vertices)
-          if (v != w)
-            coupled[position[v]].push_back(position[w]);
-    });
-    const std::vector<unsigned int> color =
-      level_schedule(coupled, color_dof, data.partitioner);
+      for (unsigned int p = 0; p < order.size(); ++p)
+        position[order[p].second] = p;
+    }
 
-    std::vector<types::global_dof_index> patch_dofs;
-    for (const auto &[k, vertex] : order)
+
+    /**
+     * For every item of @p vertices, the items it is coupled with: patches
+     * are coupled if their vertices share a cell. With hanging nodes
+     * eliminated (an adaptive mesh) a cell also couples the masters of its
+     * constrained DoFs, which lie on the coarse neighbour's face or edge:
+     * the patches of the master's vertex (a displacement DoF) or of its
+     * face's vertices (an RT DoF) are coupled with the cell's too.
+     */
+    template <int dim>
+    std::vector<std::vector<unsigned int>>
+    coupled_items(const DoFHandler<dim> &      dof_handler,
+                  const LevelData<dim> &       data,
+                  const PatchDofsInCell<dim> &in_cell,
+                  const LevelVertices<dim> &   vertices_here)
+    {
+      std::map<types::global_dof_index, std::set<unsigned int>> master_vertices;
+      for (const auto &[dof, masters] : data.hanging)
+        for (const auto &master : masters)
+          master_vertices[master.first];
+      std::vector<types::global_dof_index> dofs;
+      if (!master_vertices.empty())
+        data.for_each_cell(dof_handler, [&](const auto &cell) {
+          data.get_local_dofs(cell, dofs);
+          for (const unsigned int v : cell->vertex_indices())
+            for_patch_dofs_in_cell(in_cell, dofs, v, [&](const auto dof) {
+              const auto m = master_vertices.find(dof);
+              if (m != master_vertices.end())
+                m->second.insert(cell->vertex_index(v));
+            });
+        });
+      const std::vector<unsigned int> &      position = vertices_here.position;
+      std::vector<std::vector<unsigned int>> coupled(vertices_here.order.size());
+      std::vector<unsigned int>              vertices;
+      data.for_each_cell(dof_handler, [&](const auto &cell) {
+        vertices.clear();
+        for (const unsigned int v : cell->vertex_indices())
+          vertices.push_back(cell->vertex_index(v));
+        if (!master_vertices.empty())
+          {
+            data.get_local_dofs(cell, dofs);
+            for (const auto dof : dofs)
+              {
+                const auto h = data.hanging.find(dof);
+                if (h != data.hanging.end())
+                  for (const auto &master : h->second)
+                    for (const unsigned int w : master_vertices.at(master.first))
+                      vertices.push_back(w);
+              }
+          }
+        std::sort(vertices.begin(), vertices.end());
+        vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+        for (const unsigned int v : vertices)
+          for (const unsigned int w : vertices)
+            if (v != w)
+              coupled[position[v]].push_back(position[w]);
+      });
+      return coupled;
+    }
+  } // namespace
+
+
+  template <int dim>
+  VertexPatches<dim>::VertexPatches(const Discretization<dim> &discretization,
+                                    const unsigned int         l,
+                                    const int                  at_cells_of_level)
+  {
+    // Vertex patches in the order of their VertexKey, and their colors. A
+    // process relaxes the patches with a DoF it owns; their vertices are
+    // vertices of its own cells, whose cells are all here.
+    const auto &                dof_handler = discretization.get_dof_handler();
+    const auto &                data        = discretization.level(l);
+    const PatchDofsInCell<dim> in_cell     = patch_dofs_in_cell(dof_handler.get_fe());
+    const LevelVertices<dim>    vertices(dof_handler,
+                                      data,
+                                      relaxed_vertices(dof_handler, data, at_cells_of_level),
+                                      in_cell);
+    std::vector<types::global_dof_index> color_dof;
+    for (const auto &[k, vertex] : vertices.order)
+      color_dof.push_back(data.vertex_dofs.at(vertex)[0]);
+    const std::vector<unsigned int> color =
+      level_schedule(coupled_items(dof_handler, data, in_cell, vertices),
+                     color_dof,
+                     data.partitioner);
+
+    std::vector<types::global_dof_index> dofs;
+    for (unsigned int p = 0; p < vertices.order.size(); ++p)
       {
-        if (start[vertex] == start[vertex + 1])
+        const unsigned int vertex = vertices.order[p].second;
+        if (vertices.start[vertex] == vertices.start[vertex + 1])
           continue;
-        auto &dofs = patch_dofs;
-        dofs.assign(gathered.begin() + start[vertex], gathered.begin() + start[vertex + 1]);
+        dofs.assign(vertices.gathered.begin() + vertices.start[vertex],
+                    vertices.gathered.begin() + vertices.start[vertex + 1]);
         std::sort(dofs.begin(), dofs.end());
         dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
         if (std::none_of(dofs.begin(), dofs.end(), [&](const auto dof) {
@@ -266,8 +334,8 @@ namespace FoslsContact
           return data.global(a) < data.global(b);
         });
         patches.emplace_back(dofs.begin(), dofs.end());
-        colors.push_back(color[position[vertex]]);
-        n_colors = std::max(n_colors, color[position[vertex]] + 1);
+        colors.push_back(color[p]);
+        n_colors = std::max(n_colors, color[p] + 1);
       }
     n_colors = Utilities::MPI::max(n_colors, discretization.get_communicator());
   }

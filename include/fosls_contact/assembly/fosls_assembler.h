@@ -62,6 +62,18 @@ namespace FoslsContact
                                      const double          lambda);
 
   private:
+    /**
+     * The worker of assemble(): the terms of @p cell of @p data, with its
+     * hanging DoFs eliminated, rotated and sorted for the copier, in
+     * @p copy (left invalid for a cell that reaches no owned row). A cell
+     * of the active mesh or of a level (@p CellIterator), one per thread.
+     */
+    template <typename CellIterator>
+    void local_terms(const LevelData<dim> &data,
+                     const CellIterator &  cell,
+                     AssemblyScratch<dim> &scratch,
+                     AssemblyCopy &        copy) const;
+
     /** The volume terms of @p cell (equilibrium, constitutive, body force). */
     void cell_terms(const typename Triangulation<dim>::cell_iterator &cell,
                     AssemblyScratch<dim> &                           scratch,
@@ -81,9 +93,9 @@ namespace FoslsContact
      * its rows), the complementarity part the DoFs of a cell on Gamma_C;
      * both with the masters of their hanging DoFs. Summed on the DoF
      * coupling pattern instead, the two parts took two more matrices of
-     * A's size until compress_matrices() (at the cube's level 7, 2 x 2.5 GB
-     * of values that the process kept), and the copier added every cell's
-     * zeros to them.
+     * A's size until compress_matrices() (memory that the process kept:
+     * doc/performance.md, "Figures behind the code"), and the copier added every cell's zeros to
+     * them.
      */
     void part_patterns(const LevelData<dim> &data,
                        SparsityPattern &     eq,

@@ -105,6 +105,28 @@ namespace FoslsContact
     std::string read_ucd(const std::vector<std::string> &lines);
     std::string read_abaqus(const std::vector<std::string> &lines);
 
+    /** A Gmsh file's format and the names of its sections (mesh_check.cc). */
+    struct GmshFormat;
+    /**
+     * The nodes of a Gmsh file of @p format ($Nodes; $NOD in format 1), in
+     * its entity blocks from format 4 on: "" or why not.
+     */
+    std::string read_gmsh_nodes(const std::vector<std::string> &lines, const GmshFormat &format);
+    /** Its elements ($Elements; $ELM in format 1), the same way. */
+    std::string read_gmsh_elements(const std::vector<std::string> &lines,
+                                   const GmshFormat &              format);
+    /**
+     * The element of the @p words of the @p line at @p line_number, of
+     * the @p type of its entity block (format 4; before 4 the line gives
+     * its type and physical tag): added with add_cell() if it is a cell or
+     * boundary face the program knows, "" or why not.
+     */
+    std::string read_gmsh_element(const std::vector<std::string> &words,
+                                  const std::string &             line,
+                                  const unsigned int              line_number,
+                                  const GmshFormat &              format,
+                                  long                            type);
+
     /**
      * The physical tags of a Gmsh 4 file's $Entities section, which become
      * the boundary ids of the faces (and the material ids of the cells) of
@@ -145,6 +167,18 @@ namespace FoslsContact
 
     /** The checks by position: coincident nodes, hanging nodes, overlaps. */
     std::string check_geometry(const std::vector<unsigned int> &mesh_cells) const;
+    /** The points to test, and where they are (mesh_check.cc). */
+    struct TestPoints;
+    /** The nodes and centres of the @p mesh_cells, and the cells' corners and sizes. */
+    TestPoints test_points(const std::vector<unsigned int> &mesh_cells) const;
+    /**
+     * "" or why the test point near cell @p i of @p mesh_cells that lies in
+     * it (and is none of its nodes) makes the mesh no mesh: a second node
+     * at a corner, a hanging node on a side, or an overlap.
+     */
+    std::string points_in_cell(const std::vector<unsigned int> &mesh_cells,
+                               const TestPoints &               points,
+                               const unsigned int               i) const;
 
     /** "element 3 (line 30)" */
     std::string describe(const Cell &cell) const;

@@ -100,6 +100,31 @@ namespace FoslsContact
     static double mesh_size_ratio(const Triangulation<dim> &triangulation);
 
   private:
+    /**
+     * The mesh of Geometry/Mesh file, for Shape = file: read on every
+     * process, so that one that cannot (the file missing on its node)
+     * stops them all (CollectiveError) instead of leaving them waiting.
+     */
+    void read_mesh_file();
+    /**
+     * The reference length and stress, checked against the range in which
+     * the areas, volumes and forces converted back with them stay finite,
+     * and the material in their units.
+     */
+    void set_reference_units(const Parameters::AllParameters &prm);
+    /**
+     * The constants of Data/Constants (@p definitions, "name=value, ..."),
+     * with pi; a name muparser cannot take (a coordinate, no identifier,
+     * given twice) is refused here, where muparser would crash.
+     */
+    void read_constants(const std::string &definitions);
+    /**
+     * The data functions the scene uses, in its units, and their
+     * dimensionless versions; the others are zero, so that an expression
+     * the scene does not need is never parsed.
+     */
+    void make_data_functions(const Parameters::AllParameters &prm);
+
     /** The data expression of parameter @p name (DataExpression). */
     std::unique_ptr<FunctionParser<dim>>
     make_function(const std::string &expression,

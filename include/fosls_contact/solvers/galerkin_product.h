@@ -86,6 +86,41 @@ namespace FoslsContact
      */
     void add_ghost_parts(SparseMatrix<double> &galerkin);
 
+    /** A thread's work arrays and compute()'s state (galerkin_product.cc). */
+    struct ProductWork;
+    struct ProductState;
+    /**
+     * The rows r0 .. r1 of A P into @p state's block buffer, in parallel:
+     * the product is computed a block at a time so that it never has to be
+     * stored whole (see the class).
+     */
+    void multiply_block(const SparseMatrix<double> &A,
+                        const SparseMatrix<double> &P,
+                        const unsigned int          r0,
+                        const unsigned int          r1,
+                        ProductState &              state) const;
+    /**
+     * The block's part of P^T (A P) added to every coarse row it reaches,
+     * in parallel over those rows: each row's sums are loaded, continued
+     * over the block's fine rows in increasing order and stored back, so
+     * that every entry is the same sum whatever the blocks and threads.
+     */
+    void add_block(const SparseMatrix<double> &P,
+                   const unsigned int          r0,
+                   const unsigned int          r1,
+                   SparseMatrix<double> &      galerkin,
+                   ProductState &              state);
+    /**
+     * The partial sums of coarse row @p j into (@p load) or out of the dense
+     * @p row, which is left zero: an owned row's entries in @p galerkin and
+     * its @p extra_values outside the pattern, or a ghost row's parts.
+     */
+    void move_sums(const unsigned int    j,
+                   std::vector<double> & row,
+                   const bool            load,
+                   SparseMatrix<double> &galerkin,
+                   std::vector<double> & extra_values);
+
     /** The values of the last P, in the order of its pattern. */
     std::vector<double>       P_values;
     /**

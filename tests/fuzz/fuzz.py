@@ -44,6 +44,7 @@ their cause, on the square or the cube (or a small mesh file): a data
 expression (Dirichlet values, traction, gap, body force) that is NaN in
 part of the body, or of a size the dimensionless problem overflows on
 (1e120 to 1e300); a push so small that it underflows (1e-300 to 1e-160);
+a box so thin that its cells' aspect ratio is 2e4 to 1e9;
 a Gmsh physical tag that is negative or above 255; an Abaqus surface whose
 name holds no id, a signed one or two numbers; a mesh with a part apart
 from the rest that only a Neumann boundary or the obstacle holds. A cause
@@ -472,7 +473,8 @@ def make_mesh_case(rng, source):
     return arguments, files, "mesh " + corruption
 
 
-CAUSES = ["data nan", "data huge", "data tiny", "gmsh tag", "abaqus surface", "floating part"]
+CAUSES = ["data nan", "data huge", "data tiny", "thin cells", "gmsh tag", "abaqus surface",
+          "floating part"]
 DATA = {"Dirichlet values": "Data/Dirichlet values", "Traction": "Data/Traction",
         "Gap": "Data/Gap", "Body force": "Data/Body force"}
 
@@ -507,6 +509,11 @@ def make_cause_case(rng, source):
     arguments = ["scene.prm", "--set", "Geometry/Levels=2", "--set", "Solver/Max iterations=20",
                  "--set", "Solver/Threads=1", "--set", "Output/Directory=out",
                  "--set", "Output/Verbose=false"]
+    if cause == "thin cells":
+        thickness = rng.choice(["5e-5", "2e-5", "1e-6", "1e-9"])
+        arguments += ["--set", "Geometry/Box upper corner=" + ", ".join(["1"] * (dim - 1)
+                                                                         + [thickness])]
+        return arguments, files, "cause aspect ratio"
     if cause.startswith("data"):
         name = rng.choice(list(DATA)) if cause != "data tiny" else "Dirichlet values"
         n = 1 if name == "Gap" else dim

@@ -9,7 +9,9 @@
 # changes
 #  - while the run computes (it is stopped with SIGSTOP after its scene
 #    line): a regular file where there was nothing, a directory of the
-#    user's (not written by the program) where the program's was;
+#    user's (not written by the program) where the program's was, a
+#    directory of the user's inside the program's under the name of an
+#    output file;
 #  - just before the rename that publishes (stopped there by
 #    tests/solver/fault_injection.cc, FOSLS_FAULT_STOP_AT): with
 #    RENAME_EXCHANGE, with the two renames of a filesystem without it, and
@@ -122,6 +124,17 @@ changed_while_computing("the directory replaced by the user's while the run comp
                         lambda: content("written/mine.txt") == "the user's\n"
                         and sorted(os.listdir("written")) == ["mine.txt"]
                         and content("written.moved/summary.json") is not None)
+
+
+# while the run computes: a directory of the user's made in the program's
+# directory under the name of an output file
+rc, out, err = execute(command("taken"))
+check(rc == 0, "a run into 'taken': exit code 0")
+changed_while_computing("a directory named summary.json made while the run computes", "taken",
+                        lambda: (os.remove("taken/summary.json"),
+                                 os.mkdir("taken/summary.json"),
+                                 file_with("taken/summary.json/mine.txt", "the user's\n")),
+                        lambda: content("taken/summary.json/mine.txt") == "the user's\n")
 
 
 # just before the rename that publishes: the directory moved away and a

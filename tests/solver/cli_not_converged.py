@@ -3,6 +3,7 @@
 # line on stderr saying so (it exited with 0 before). The square with
 # Solver/Max iterations = 1, on one process and on two; a converged run
 # exits with 0 and prints nothing on stderr.
+# ctest: timeout=120
 import json
 import os
 import sys

@@ -6,6 +6,7 @@
 # guess, solver set-up, solve, output), a quiet one none; --print-parameters
 # with a scene and --set prints the scene's values (it printed the defaults
 # before).
+# ctest: timeout=120
 import json
 import os
 import re

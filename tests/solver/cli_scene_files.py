@@ -6,6 +6,7 @@
 # failed with "entry <C\xC0mpl>"); a scene that includes itself is one line
 # (it crashed after thousands of nested frames), includes are relative to
 # the including file.
+# ctest: timeout=120
 import json
 import os
 import subprocess

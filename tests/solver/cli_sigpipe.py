@@ -3,6 +3,7 @@
 # exits with 0 (SIGPIPE killed it before, exit code -13, without files).
 # Twice: the reading end closed before the start (the first line fails),
 # and after the first line, as `head -1` does.
+# ctest: timeout=120
 import os
 import subprocess
 import sys

@@ -32,6 +32,7 @@
 # solver there (2 and 3 processes). Only the one-process counts are printed
 # (those of N processes are asserted), so the output does not depend on
 # round-off.
+# ctest: timeout=900 mpirun
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

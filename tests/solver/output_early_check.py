@@ -6,6 +6,7 @@
 # (where no file can be made), the current directory (the run would move
 # it). Each run must fail with exit code 1 and one line on stderr, without
 # printing the scene (the first line of the set-up), and make nothing.
+# ctest: timeout=120
 import os
 import sys
 

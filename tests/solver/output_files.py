@@ -5,6 +5,7 @@
 # false left the old solution next to the new summary). Runs of the square,
 # 2 levels: on 2 processes, then on 1 into the same directory, then with
 # Write vtu = false; every time the .pvtu lists exactly the pieces present.
+# ctest: timeout=120 mpirun
 import os
 import re
 import sys

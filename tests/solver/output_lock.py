@@ -8,6 +8,7 @@
 # the lock file removed while the first run is stopped: the second run
 # finds the first one's staging directory in use (found by probing: it
 # removed it, and the first run failed).
+# ctest: timeout=120
 import os
 import re
 import signal

@@ -6,6 +6,7 @@
 # carried over into the new directory with their content, while the pieces
 # an earlier run wrote and this one does not (solution_0000.1.vtu after a
 # run on 2 processes) are removed, as is the .pvtu when Write vtu = false.
+# ctest: timeout=120 mpirun
 import os
 import re
 import shutil

@@ -119,8 +119,8 @@ PROCESSES = {"default2p": 2}
 # cycle per DoF in three runs of one binary), and slow spells lasted long
 # enough to slow three consecutive runs of level 5 alike (0.49 against 0.37
 # us for lambda = inf minutes later), so the repetitions run round-robin at
-# the end of the suite. Three runs were not enough: on a machine idle
-# before the suite (session 19) the three runs of level 7 with 2 threads took
+# the end of the suite. Three runs are not enough: on a machine idle
+# before the suite the three runs of level 7 with 2 threads took
 # 0.260, 0.293 and 0.177 s, and level 9 with lambda = inf 2.34 to 3.21 s while
 # lambda = 1 (same size, same 11 cycles) took 2.75 s at best. The iterates of
 # the runs are identical; runs.csv notes every run's solve time.

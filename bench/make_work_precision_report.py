@@ -284,7 +284,7 @@ md.append("Solver names: `mg-<cycle>-<projection>` = monotone multigrid with Kry
           "active set + sparse direct solver. `cycles` counts multigrid cycles (every CG "
           "step of the Krylov variant is one).\n")
 
-# the 3D levels: how far memory goes (the issue: "as far as fits in 20 GB")
+# the 3D levels: how far memory goes (as far as fits in 20 GB)
 cube = [r for r in ran if r["scene"] == "cube3d" and isinstance(r.get("peak_rss_mb"), float)]
 if cube:
     top = max(r["level"] for r in cube)

@@ -2,9 +2,9 @@
 """MPI processes and threads: strong scaling (1 process x 1 thread, 1 x 2,
 2 x 1 on the same problem), weak scaling (the problem doubled with the
 processes), memory per DoF, the communication per cycle, and the 3D run of
-more than a million DoFs on two processes (issue "Distributed runs", items
-5, 6, 7 and 9). Runs one case at a time (the machine has 2 cores) and writes
-doc/parallel_results.md (generated; doc/parallel.md explains it).
+more than a million DoFs on two processes. Runs one case at a time (the
+machine has 2 cores) and writes doc/parallel_results.md (generated;
+doc/parallel.md explains it).
 
     bench/parallel.py            # about 15 minutes on 2 cores, 12 GB peak
 """

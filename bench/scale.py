@@ -160,7 +160,7 @@ def square_force(results, tag="square"):
 
 
 def targets(results):
-    """The targets of the issue on whole runs, each with its measured figure
+    """The performance targets on whole runs, each with its measured figure
     and whether it is met."""
     rows = []
 

@@ -24,8 +24,8 @@ import os
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from parallel import ROOT, BIN, RES, fastest, run  # noqa: E402
+from common import BIN, ROOT
+from parallel import RES, fastest, run
 
 OUT = os.path.join(ROOT, "doc", "cycle_type_results.md")
 CASES = [("square, 9 levels", "square.prm", {"Geometry/Levels": "9"}),

@@ -16,7 +16,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from common import ROOT  # noqa: E402
+
 CSV = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "doc", "work_precision.csv")
 FIG = os.path.join(ROOT, "doc", "figures")
 OUT = os.path.join(ROOT, "doc", "work_precision.md")

@@ -15,9 +15,8 @@ import subprocess
 import sys
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BIN = os.path.join(ROOT, "build", "fosls-contact")
-RES = os.path.join(ROOT, "bench", "results")
+from common import BIN, RESULTS as RES, command, launch
+
 CASE_LIMIT_S = 300.0          # skip any single case predicted/observed above this
 SUITE_BUDGET_S = 14.5 * 60.0    # do not start level-9 cases beyond this suite time
 T0 = time.time()
@@ -42,22 +41,15 @@ def run(case, scene, sets, meta, timeout=CASE_LIMIT_S, record=True, processes=1)
     """Run one case (on @p processes MPI processes); returns the row (dict)."""
     out = os.path.join(RES, case)
     shutil.rmtree(out, ignore_errors=True)
-    cmd = [BIN, os.path.join(ROOT, "prm", scene)]
-    if processes > 1:
-        cmd = [shutil.which("mpirun") or "mpirun", "--oversubscribe", "-np",
-               str(processes)] + cmd
     allsets = dict(sets)
     allsets["Output/Directory"] = out
     allsets["Output/Write vtu"] = "false"
     allsets["Output/Verbose"] = "false"
-    for k, v in allsets.items():
-        cmd += ["--set", f"{k}={v}"]
+    cmd = command(scene, allsets, processes=processes)
     row = {"case": case, "scene": scene, **meta}
     t = time.time()
     try:
-        p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout,
-                       env=dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-                                OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1"))
+        p = launch(cmd, capture_output=True, text=True, timeout=timeout)
         row["wall_s"] = round(time.time() - t, 3)
         if p.returncode != 0:
             row["status"] = "error"

@@ -29,7 +29,8 @@ structured mesh of quadrilaterals or hexahedra (Geometry/Shape = file,
 the whole boundary clamped) written as Gmsh 2.2, Gmsh 4.1, VTK, AVS UCD
 or Abaqus, with one corruption drawn: a node index past the nodes or
 negative, a cell listed twice (same order, rotated, reversed), a cell
-refined alone (hanging nodes), a cell moved by half its size (overlap), a
+listed twisted (a quadrilateral crossed, a hexahedron's upper face turned
+by a quarter, a half or three quarters), a cell refined alone (hanging nodes), a cell moved by half its size (overlap), a
 shared node split in two at one point (a crack), z != 0 in 2D, a
 coordinate that is no finite number or missing, a Gmsh header of another
 version than its body, a truncation at a random byte; or none, or a UTF-8
@@ -290,7 +291,7 @@ def make_case(rng, number, source, entries):
 
 
 MESH_CORRUPTIONS = ["index past", "index negative", "cell twice", "cell twice rotated",
-                    "cell twice reversed", "hanging nodes", "overlap", "point twice", "off plane",
+                    "cell twice reversed", "cell twisted", "hanging nodes", "overlap", "point twice", "off plane",
                     "coordinate", "version", "truncation", "none", "bom crlf"]
 # corruptions a run may take (a truncation can leave a mesh whole); the others must be refused
 MESH_VALID = ["none", "bom crlf"]
@@ -336,6 +337,13 @@ def corrupt_mesh(rng, dim, points, cells, h, corruption):
         elif corruption.endswith("reversed"):
             cell = cell[4:] + cell[:4] if dim == 3 else cell[::-1]
         cells.insert(rng.randrange(len(cells) + 1), cell)
+    elif corruption == "cell twisted":
+        cell = cells[c]
+        if dim == 2:
+            cell[2], cell[3] = cell[3], cell[2]
+        else:
+            r = rng.randint(1, 3)
+            cell[4:] = cell[4 + r:] + cell[4:4 + r]
     elif corruption == "hanging nodes":
         # cell c in 2^dim children, its neighbours whole
         low = points[cells[c][0]]

@@ -1,6 +1,6 @@
 # An Output/Directory that cannot be used is found before the set-up, in
-# one line naming Output/Directory (found by probing: only after the solve,
-# as "filesystem error: cannot remove all: Permission denied"). The tests
+# one line naming Output/Directory (not after the solve, as "filesystem
+# error: cannot remove all: Permission denied"). The tests
 # run as root, whom permission bits do not stop, so the directories are
 # unusable otherwise: a path under a regular file, a directory in /proc
 # (where no file can be made), the current directory (the run would move
@@ -8,6 +8,7 @@
 # (which the run could neither keep beside its file nor remove). Each run
 # must fail with exit code 1 and one line on stderr, without
 # printing the scene (the first line of the set-up), and make nothing.
+# ctest: timeout=120
 import os
 import sys
 

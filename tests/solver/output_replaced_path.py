@@ -3,10 +3,9 @@
 # directory the program may replace. It ends with exit code 1 and one line
 # naming Output/Directory and the directory in which it keeps its results
 # (<name>.results-<pid>, with summary.json), and leaves nothing else
-# (README, "How the output files appear"). (Found by probing: a regular
-# file made at the path during the run was exchanged for the results and
-# left in the hidden staging directory, with exit code 0.) The path
-# changes
+# (README, "How the output files appear"): a regular file made at the
+# path during the run must not be exchanged for the results and left in
+# the hidden staging directory with exit code 0. The path changes
 #  - while the run computes (it is stopped with SIGSTOP after its scene
 #    line): a regular file where there was nothing, a directory of the
 #    user's (not written by the program) where the program's was, a

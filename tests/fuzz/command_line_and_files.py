@@ -1,8 +1,9 @@
+# ctest: long
 """Fuzz the command line, the scene files and the parameter values of
 fosls-contact.
 
-usage: fuzz.py FOSLS_CONTACT SOURCE_DIR [--cases N] [--mesh-cases M] [--cause-cases K]
-               [--mpi-cases P] [--seed S] [--jobs J]
+usage: command_line_and_files.py FOSLS_CONTACT SOURCE_DIR [--cases N]
+           [--mesh-cases M] [--cause-cases K] [--mpi-cases P] [--seed S] [--jobs J]
 
 Generates N cases (default 600) with a fixed seed (default 1) from the
 scenes in tests/scenes (Geometry/Levels = 2, at most 20 iterations, one

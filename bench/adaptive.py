@@ -37,14 +37,12 @@ import csv
 import json
 import math
 import os
-import subprocess
-import sys
-import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-RES = os.path.join(ROOT, "bench", "results", "adaptive")
+import common
+from common import BIN, RESULTS, ROOT
+
+RES = os.path.join(RESULTS, "adaptive")
 DOC = os.path.join(ROOT, "doc", "adaptivity_results.md")
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 
 REPORT_ONLY = False
@@ -60,20 +58,12 @@ def run(binary, prm, settings, name):
         with open(os.path.join(out, "summary.json")) as f, \
                 open(os.path.join(out, "wall_s.txt")) as w:
             return json.load(f), float(w.read())
-    command = [binary, os.path.join(ROOT, "prm", prm), "--set", "Output/Directory=" + out,
-               "--set", "Output/Write vtu=false", "--set", "Output/Verbose=false"]
-    for s in settings:
-        command += ["--set", s]
-    start = time.time()
-    result = subprocess.run(command, env=ENV, stdout=subprocess.DEVNULL,
-                            stderr=subprocess.PIPE, text=True)
-    wall = time.time() - start
-    if result.returncode != 0:
-        sys.exit("%s failed: %s" % (name, result.stderr.strip()))
+    summary = common.run(prm, ["Output/Write vtu=false", "Output/Verbose=false"] + settings,
+                         out, binary)
+    wall = summary.pop("wall_s")
     with open(os.path.join(out, "wall_s.txt"), "w") as w:
         w.write("%.6f\n" % wall)
-    with open(os.path.join(out, "summary.json")) as f:
-        return json.load(f), wall
+    return summary, wall
 
 
 def uniform_needs(uniform, error, key):
@@ -320,7 +310,7 @@ def main():
     parser.add_argument("--small-max-level", type=int, default=7,
                         help="the finest uniform level of the half disc with a small "
                         "contact zone")
-    parser.add_argument("--bin", default=os.path.join(ROOT, "build", "fosls-contact"))
+    parser.add_argument("--bin", default=BIN)
     parser.add_argument("--report-only", action="store_true",
                         help="write the report from the last runs' results, running nothing")
     args = parser.parse_args()

@@ -21,11 +21,10 @@ import sys
 import time
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from common import RESULTS, ROOT  # noqa: E402
 from parallel import label, relative, run  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-RES = os.path.join(ROOT, "bench", "results", "adaptive_processes")
+RES = os.path.join(RESULTS, "adaptive_processes")
 OUT = os.path.join(ROOT, "doc", "adaptive_processes_results.md")
 SCENES = [("Hertz half disc", "hertz_adaptive.prm"), ("3D ball", "ball3d_adaptive.prm")]
 CONFIGURATIONS = [(1, 1), (1, 2), (2, 1)]

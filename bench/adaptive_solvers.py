@@ -19,16 +19,14 @@ bench/results/adaptive_solvers/).
     adaptive_solvers.py [--bin PATH]
 """
 import argparse
-import json
 import math
 import os
-import subprocess
-import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-RES = os.path.join(ROOT, "bench", "results", "adaptive_solvers")
+import common
+from common import BIN, RESULTS, ROOT
+
+RES = os.path.join(RESULTS, "adaptive_solvers")
 DOC = os.path.join(ROOT, "doc", "adaptive_solvers_results.md")
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 # scene, its uniform counterpart, adaptive settings (budgets that the active
 # set method's direct solves finish in minutes), uniform levels
@@ -43,22 +41,14 @@ SCENES = [
 
 
 def run(binary, prm, settings, tag):
-    out = os.path.join(RES, tag)
-    cmd = [binary, os.path.join(ROOT, "prm", prm), "--set", "Output/Directory=" + out,
-           "--set", "Output/Write vtu=false"]
-    for s in settings:
-        cmd += ["--set", s]
-    result = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=ENV,
-                            universal_newlines=True)
-    if result.returncode != 0:
-        sys.exit("adaptive_solvers.py: %s failed: %s" % (tag, result.stderr.strip()))
-    with open(os.path.join(out, "summary.json")) as f:
-        return json.load(f)
+    """The summary.json of a run into bench/results/adaptive_solvers/@p tag."""
+    return common.run(prm, ["Output/Write vtu=false"] + settings, os.path.join(RES, tag),
+                      binary)
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--bin", default=os.path.join(ROOT, "build", "fosls-contact"))
+    parser.add_argument("--bin", default=BIN)
     args = parser.parse_args()
     os.makedirs(RES, exist_ok=True)
     multigrid = "Solver/Type=monotone multigrid"

@@ -22,8 +22,8 @@ import argparse
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from parallel import ROOT, fastest  # noqa: E402
+from common import scene_file
+from parallel import fastest
 
 
 def arguments():
@@ -66,8 +66,8 @@ def arguments():
         p.error(f"--levels '{a.levels}': expected integers separated by commas")
     if min(a.levels) < 1 or a.threads < 1 or a.processes < 1 or a.runs < 1:
         p.error("--levels, --threads, --processes and --runs must be positive")
-    if not os.path.isfile(os.path.join(ROOT, "prm", a.scene)):
-        p.error(f"--scene '{a.scene}': no such file in {os.path.join(ROOT, 'prm')}")
+    if not os.path.isfile(scene_file(a.scene)):
+        p.error(f"--scene '{a.scene}': no such file in {os.path.dirname(scene_file(a.scene))}")
     a.settings = dict(pair(s, "--set") for s in a.set)
     for key in a.settings:
         # (these the script sets itself: the levels per run, the output it

@@ -15,25 +15,21 @@ push). Writes doc/contact_edge_results.md.
 """
 import argparse
 import csv
-import json
 import math
-import subprocess
 import tempfile
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parent.parent
+import common
+from common import BIN, ROOT
+
 PUSH = 0.002
 
 
 def run(exe, settings, work):
     out = Path(work) / "out"
-    command = [exe, str(ROOT / "prm" / "half_ball.prm"), "--set", "Output/Directory=%s" % out,
-               "--set", "Output/Write vtu=false",
-               "--set", "Data/Constants=push=%r, R=0.5" % PUSH]
-    for s in settings:
-        command += ["--set", s]
-    subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
-    summary = json.loads((out / "summary.json").read_text())
+    summary = common.run("half_ball.prm", ["Output/Write vtu=false",
+                                           "Data/Constants=push=%r, R=0.5" % PUSH] + settings,
+                         out, exe)
     with open(out / "contact.csv") as f:
         rows = list(csv.DictReader(f))
     return summary, rows
@@ -56,10 +52,10 @@ def edge(summary, rows):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--exe", default=str(ROOT / "build" / "fosls-contact"))
+    parser.add_argument("--exe", default=BIN)
     parser.add_argument("--levels", type=int, nargs="+", default=[2, 3, 4])
     parser.add_argument("--adaptive-steps", type=int, default=4)
-    parser.add_argument("--output", default=str(ROOT / "doc" / "contact_edge_results.md"))
+    parser.add_argument("--output", default=str(Path(ROOT) / "doc" / "contact_edge_results.md"))
     args = parser.parse_args()
     results = []
     for level in args.levels:

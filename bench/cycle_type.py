@@ -15,7 +15,7 @@ see the same spells of the machine, and each first in half of the runs: with
 W always first, F's level 5 with 2 threads was 3-17% slower in all 3 runs
 (0.545 against 0.500 us at best) although it visits the same levels as W;
 with the order alternated, 8 runs each, F and W took 10.1 and 10.6 ms at
-best (by hand).
+best.
 
     bench/cycle_type.py          # about 20 minutes on 2 cores
     bench/cycle_type.py --quick  # without the flatness part, about 5
@@ -24,8 +24,8 @@ import os
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from parallel import ROOT, BIN, RES, fastest, run  # noqa: E402
+from common import BIN, ROOT
+from parallel import RES, fastest, run
 
 OUT = os.path.join(ROOT, "doc", "cycle_type_results.md")
 CASES = [("square, 9 levels", "square.prm", {"Geometry/Levels": "9"}),

@@ -7,13 +7,12 @@ Schur complement that the program's definiteness check computes (negative:
 the run is refused). Usage: bench/definiteness.py [path/to/fosls-contact]
 """
 import re
-import subprocess
 import sys
 import tempfile
-from pathlib import Path
 
-root = Path(__file__).resolve().parent.parent
-exe = sys.argv[1] if len(sys.argv) > 1 else str(root / "build" / "fosls-contact")
+from common import BIN, command, launch
+
+exe = sys.argv[1] if len(sys.argv) > 1 else BIN
 weights = ["0.05", "0.1", "0.2", "0.3", "0.5", "1", "10"]
 levels = [2, 3, 4, 5, 6]
 pattern = re.compile(r"Schur complement(?: =|\s+)\s*(-?[0-9.eE+-]+)")
@@ -24,14 +23,12 @@ for c in weights:
     row = []
     for l in levels:
         with tempfile.TemporaryDirectory() as out:
-            run = subprocess.run(
-                [exe, str(root / "prm" / "square.prm"),
-                 "--set", f"Functional weights/C_compl={c}",
-                 "--set", f"Geometry/Levels={l}",
-                 "--set", "Solver/Type=active set",
-                 "--set", "Output/Write vtu=false",
-                 "--set", f"Output/Directory={out}/o"],
-                capture_output=True, text=True)
+            run = launch(command("square.prm", [f"Functional weights/C_compl={c}",
+                                                f"Geometry/Levels={l}",
+                                                "Solver/Type=active set",
+                                                "Output/Write vtu=false",
+                                                f"Output/Directory={out}/o"], exe),
+                         capture_output=True, text=True)
         text = run.stdout + run.stderr
         m = pattern.search(text)
         value = float(m.group(1)) if m else float("nan")

@@ -12,17 +12,17 @@ solve is cut to one projected Gauss-Seidel sweep.
 """
 import argparse
 import json
-import os
 import subprocess
 import tempfile
 from pathlib import Path
 
-from definiteness_limit import ROOT, finest_level_check
+from common import BIN, launch
+from definiteness_limit import finest_level_check
 
 
 def arguments():
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    p.add_argument("--exe", default=str(ROOT / "build" / "fosls-contact"))
+    p.add_argument("--exe", default=BIN)
     p.add_argument("--base-exe", help="another binary, run alternately with --exe")
     p.add_argument("--levels", default="3-5", metavar="FIRST-LAST")
     p.add_argument("--runs", type=int, default=2)
@@ -35,9 +35,8 @@ def check_seconds(exe, levels, timeout):
     """(DoFs, the check's seconds) of one run, or (None, None) if cut off."""
     with tempfile.TemporaryDirectory() as out:
         command = finest_level_check(exe, "cube3d.prm", levels, f"{out}/o")
-        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
         try:
-            subprocess.run(command, capture_output=True, text=True, timeout=timeout, env=env)
+            launch(command, capture_output=True, text=True, timeout=timeout)
         except subprocess.TimeoutExpired:
             return None, None
         summary = Path(out) / "o" / "summary.json"

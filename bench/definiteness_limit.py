@@ -30,11 +30,10 @@ accepted).
 """
 import argparse
 import re
-import subprocess
 import tempfile
-from pathlib import Path
 
-ROOT = Path(__file__).resolve().parent.parent
+from common import BIN, command, launch
+
 LIMIT = re.compile(r"C_compl = auto: [0-9.eE+-]+ \([^)]*largest definite value "
                    r"([0-9.eE+-]+) on level (\d+)\)")
 PATTERN = re.compile(r"Definiteness check on level (\d+)[^:]*: smallest relative eigenvalue of the "
@@ -43,7 +42,7 @@ PATTERN = re.compile(r"Definiteness check on level (\d+)[^:]*: smallest relative
 
 def arguments():
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    p.add_argument("--exe", default=str(ROOT / "build" / "fosls-contact"))
+    p.add_argument("--exe", default=BIN)
     p.add_argument("--scene", action="append", metavar="FILE:FIRST-LAST",
                    help="a file of prm/ and its Geometry/Levels range "
                    "(default square.prm:3-9, hertz.prm:2-6, cube3d.prm:2-5, punch.prm:1-4)")
@@ -66,25 +65,20 @@ def finest_level_check(exe, scene, levels, out, settings=()):
     definiteness check on its finest level and the solve cut to one
     projected Gauss-Seidel sweep, its output in @p out; @p settings: more
     "key=value" settings (also for bench/definiteness_cost.py)."""
-    command = [exe, str(ROOT / "prm" / scene),
-               "--set", f"Geometry/Levels={levels}",
-               "--set", "Solver/Definiteness check max dofs=100000000",
-               "--set", "Solver/Type=projected gauss seidel",
-               "--set", "Solver/Max iterations=1",
-               "--set", "Output/Write vtu=false",
-               "--set", f"Output/Directory={out}"]
-    for setting in settings:
-        command += ["--set", setting]
-    return command
+    return command(scene, [f"Geometry/Levels={levels}",
+                           "Solver/Definiteness check max dofs=100000000",
+                           "Solver/Type=projected gauss seidel",
+                           "Solver/Max iterations=1",
+                           "Output/Write vtu=false",
+                           f"Output/Directory={out}"] + list(settings), exe)
 
 
 def smallest_eigenvalue(exe, scene, levels, weight):
     """The check's eigenvalue and level for C_compl = weight."""
     with tempfile.TemporaryDirectory() as out:
-        run = subprocess.run(
-            finest_level_check(exe, scene, levels, f"{out}/o",
-                               [f"Functional weights/C_compl={weight!r}"]),
-            capture_output=True, text=True)
+        run = launch(finest_level_check(exe, scene, levels, f"{out}/o",
+                                        [f"Functional weights/C_compl={weight!r}"]),
+                     capture_output=True, text=True)
     m = PATTERN.search(run.stdout + run.stderr)
     if not m:
         raise SystemExit(f"no definiteness check in the output of {scene} at {levels} levels, "
@@ -114,10 +108,9 @@ def limit(exe, scene, levels, low, high, tolerance):
 def computed_limit(exe, scene, levels, settings=()):
     """The limit that C_compl = auto computes on the finest level, and that level."""
     with tempfile.TemporaryDirectory() as out:
-        run = subprocess.run(
-            finest_level_check(exe, scene, levels, f"{out}/o",
-                               ["Functional weights/C_compl=auto"] + list(settings)),
-            capture_output=True, text=True)
+        run = launch(finest_level_check(exe, scene, levels, f"{out}/o",
+                                        ["Functional weights/C_compl=auto"] + list(settings)),
+                     capture_output=True, text=True)
     m = LIMIT.search(run.stdout)
     if not m:
         raise SystemExit(f"no computed limit in the output of {scene} at {levels} levels:\n"
@@ -128,10 +121,10 @@ def computed_limit(exe, scene, levels, settings=()):
 def default_check_level(exe, scene, levels):
     """The level the default definiteness check (at most 20,000 DoFs) runs on."""
     with tempfile.TemporaryDirectory() as out:
-        command = finest_level_check(exe, scene, levels, f"{out}/o",
-                                     ["Solver/Definiteness check max dofs=20000",
-                                      "Functional weights/C_compl=auto"])
-        run = subprocess.run(command, capture_output=True, text=True)
+        run = launch(finest_level_check(exe, scene, levels, f"{out}/o",
+                                        ["Solver/Definiteness check max dofs=20000",
+                                         "Functional weights/C_compl=auto"]),
+                     capture_output=True, text=True)
     m = LIMIT.search(run.stdout)
     return int(m.group(2)) if m else None
 

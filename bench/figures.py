@@ -27,32 +27,23 @@ output with matplotlib (no ParaView needed):
 
 The runs go to bench/results/figures_<scene>/.
 """
-import json
 import math
 import os
 import re
-import subprocess
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import common
+from common import RESULTS as RES, ROOT
+
 sys.path.insert(0, os.path.join(ROOT, "tests", "solver"))
 import vtu  # noqa: E402  (the reader the tests use)
 
-BIN = os.path.join(ROOT, "build", "fosls-contact")
-RES = os.path.join(ROOT, "bench", "results")
 FIG = os.path.join(ROOT, "doc", "figures")
 
 
 def run(name, prm, settings):
     out = os.path.join(RES, "figures_" + name)
-    cmd = [BIN, os.path.join(ROOT, "prm", prm), "--set", "Output/Directory=" + out,
-           "--set", "Output/Verbose=false"]
-    for s in settings:
-        cmd += ["--set", s]
-    subprocess.run(cmd, check=True, env=dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-                                               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1"))
-    with open(os.path.join(out, "summary.json")) as f:
-        summary = json.load(f)
+    summary = common.run(prm, ["Output/Verbose=false"] + settings, out)
     _, pieces = vtu.read_record(os.path.join(out, "solution_0000.pvtu"))
     return out, summary, pieces
 

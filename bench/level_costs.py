@@ -19,16 +19,15 @@ threads (a few dozen patches per color) stay serial.
 
     bench/level_costs.py            # build first: scripts/setup.sh
 """
-import json
 import os
 import shutil
-import subprocess
 import sys
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BIN = os.path.join(ROOT, "build", "fosls-contact")
-OUT = os.path.join(ROOT, "bench", "results", "level_costs")
+import common
+from common import BIN, RESULTS, ROOT
+
+OUT = os.path.join(RESULTS, "level_costs")
 DOC = os.path.join(ROOT, "doc", "level_costs.md")
 LEVELS = [5, 6, 7, 8, 9]
 THREADS = [1, 2]
@@ -41,15 +40,8 @@ SMALL_DOFS = 1000
 def run(level, threads, k):
     out = os.path.join(OUT, f"L{level}_t{threads}_run{k}")
     shutil.rmtree(out, ignore_errors=True)
-    cmd = [BIN, os.path.join(ROOT, "prm", "square.prm"),
-           "--set", f"Geometry/Levels={level}",
-           "--set", f"Solver/Threads={threads}",
-           "--set", f"Output/Directory={out}",
-           "--set", "Output/Write vtu=false",
-           "--set", "Output/Verbose=false"]
-    subprocess.run(cmd, check=True, capture_output=True)
-    with open(os.path.join(out, "summary.json")) as f:
-        s = json.load(f)
+    s = common.run("square.prm", [f"Geometry/Levels={level}", f"Solver/Threads={threads}",
+                                  "Output/Write vtu=false", "Output/Verbose=false"], out)
     shutil.rmtree(out, ignore_errors=True)
     return s
 

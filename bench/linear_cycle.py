@@ -14,8 +14,8 @@ import argparse
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from parallel import BIN, fastest  # noqa: E402
+from common import BIN
+from parallel import fastest
 
 SCENES = [("square", "square.prm", {}, (6, 7, 8)),
           ("half disc", "hertz.prm", {"Geometry/Grading": "1"}, (4, 5))]

@@ -16,7 +16,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from common import ROOT  # noqa: E402
+
 CSV = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "doc", "work_precision.csv")
 FIG = os.path.join(ROOT, "doc", "figures")
 OUT = os.path.join(ROOT, "doc", "work_precision.md")
@@ -284,7 +285,7 @@ md.append("Solver names: `mg-<cycle>-<projection>` = monotone multigrid with Kry
           "active set + sparse direct solver. `cycles` counts multigrid cycles (every CG "
           "step of the Krylov variant is one).\n")
 
-# the 3D levels: how far memory goes (the issue: "as far as fits in 20 GB")
+# the 3D levels: how far memory goes (as far as fits in 20 GB)
 cube = [r for r in ran if r["scene"] == "cube3d" and isinstance(r.get("peak_rss_mb"), float)]
 if cube:
     top = max(r["level"] for r in cube)

@@ -2,25 +2,22 @@
 """MPI processes and threads: strong scaling (1 process x 1 thread, 1 x 2,
 2 x 1 on the same problem), weak scaling (the problem doubled with the
 processes), memory per DoF, the communication per cycle, and the 3D run of
-more than a million DoFs on two processes (issue "Distributed runs", items
-5, 6, 7 and 9). Runs one case at a time (the machine has 2 cores) and writes
-doc/parallel_results.md (generated; doc/parallel.md explains it).
+more than a million DoFs on two processes. Runs one case at a time (the
+machine has 2 cores) and writes doc/parallel_results.md (generated;
+doc/parallel.md explains it).
 
     bench/parallel.py            # about 15 minutes on 2 cores, 12 GB peak
 """
-import json
 import math
 import os
-import shutil
-import subprocess
 import sys
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BIN = os.path.join(ROOT, "build", "fosls-contact")
-RES = os.path.join(ROOT, "bench", "results", "parallel")
+import common
+from common import BIN, RESULTS, ROOT
+
+RES = os.path.join(RESULTS, "parallel")
 OUT = os.path.join(ROOT, "doc", "parallel_results.md")
-MPIRUN = shutil.which("mpirun") or "mpirun"
 
 # (name, scene, settings); every case is run as 1 process x 1 thread,
 # 1 process x 2 threads and 2 processes x 1 thread
@@ -48,26 +45,13 @@ PHASES = [("Assembly", "assembly"), ("Setup: solver", "solver set-up"),
 
 def run(scene, settings, processes, threads, out, binary=None):
     """One run of `binary` (default: build/fosls-contact) on prm/`scene` with
-    the `settings` ("Subsection/Name": value); its summary.json, with the
-    wall time of the whole run as "wall_s"."""
-    cmd = [binary or BIN, os.path.join(ROOT, "prm", scene), "--set", f"Output/Directory={out}",
-           "--set", "Output/Write vtu=false", "--set", "Output/Verbose=false",
-           "--set", f"Solver/Threads={threads}"]
-    if processes > 1:
-        cmd = [MPIRUN, "--oversubscribe", "-np", str(processes)] + cmd
-    for k, v in settings.items():
-        cmd += ["--set", f"{k}={v}"]
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               DEAL_II_NUM_THREADS=str(threads))
-    t = time.time()
-    p = subprocess.run(cmd, capture_output=True, text=True, env=env)
-    wall = time.time() - t
-    if p.returncode != 0:
-        sys.exit(f"failed: {' '.join(cmd)}\n{p.stderr}")
-    with open(os.path.join(out, "summary.json")) as f:
-        s = json.load(f)
-    s["wall_s"] = wall
-    return s
+    the `settings` ("Subsection/Name": value), without vtu files and screen
+    output; its summary.json, with the wall time of the whole run as
+    "wall_s"."""
+    return common.run(scene, ["Output/Write vtu=false", "Output/Verbose=false",
+                              f"Solver/Threads={threads}"]
+                      + [f"{k}={v}" for k, v in settings.items()],
+                      out, binary, processes, threads)
 
 
 def fastest(variants, levels, runs, scene, settings, processes, threads, tag):

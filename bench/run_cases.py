@@ -15,9 +15,8 @@ import subprocess
 import sys
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BIN = os.path.join(ROOT, "build", "fosls-contact")
-RES = os.path.join(ROOT, "bench", "results")
+from common import BIN, RESULTS as RES, command, launch
+
 CASE_LIMIT_S = 300.0          # skip any single case predicted/observed above this
 SUITE_BUDGET_S = 14.5 * 60.0    # do not start level-9 cases beyond this suite time
 T0 = time.time()
@@ -42,22 +41,15 @@ def run(case, scene, sets, meta, timeout=CASE_LIMIT_S, record=True, processes=1)
     """Run one case (on @p processes MPI processes); returns the row (dict)."""
     out = os.path.join(RES, case)
     shutil.rmtree(out, ignore_errors=True)
-    cmd = [BIN, os.path.join(ROOT, "prm", scene)]
-    if processes > 1:
-        cmd = [shutil.which("mpirun") or "mpirun", "--oversubscribe", "-np",
-               str(processes)] + cmd
     allsets = dict(sets)
     allsets["Output/Directory"] = out
     allsets["Output/Write vtu"] = "false"
     allsets["Output/Verbose"] = "false"
-    for k, v in allsets.items():
-        cmd += ["--set", f"{k}={v}"]
+    cmd = command(scene, allsets, processes=processes)
     row = {"case": case, "scene": scene, **meta}
     t = time.time()
     try:
-        p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout,
-                       env=dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-                                OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1"))
+        p = launch(cmd, capture_output=True, text=True, timeout=timeout)
         row["wall_s"] = round(time.time() - t, 3)
         if p.returncode != 0:
             row["status"] = "error"
@@ -119,8 +111,8 @@ PROCESSES = {"default2p": 2}
 # cycle per DoF in three runs of one binary), and slow spells lasted long
 # enough to slow three consecutive runs of level 5 alike (0.49 against 0.37
 # us for lambda = inf minutes later), so the repetitions run round-robin at
-# the end of the suite. Three runs were not enough: on a machine idle
-# before the suite (session 19) the three runs of level 7 with 2 threads took
+# the end of the suite. Three runs are not enough: on a machine idle
+# before the suite the three runs of level 7 with 2 threads took
 # 0.260, 0.293 and 0.177 s, and level 9 with lambda = inf 2.34 to 3.21 s while
 # lambda = 1 (same size, same 11 cycles) took 2.75 s at best. The iterates of
 # the runs are identical; runs.csv notes every run's solve time.

@@ -23,17 +23,16 @@ the program's structures per DoF (summary.json's memory_mb) where the build
 reports it.
 """
 import argparse
-import json
 import os
 import shutil
 import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from parallel import ROOT, run  # noqa: E402
+from common import BIN, RESULTS, ROOT, launch
+from parallel import run
 
-RES = os.path.join(ROOT, "bench", "results", "scale")
+RES = os.path.join(RESULTS, "scale")
 OUT = os.path.join(ROOT, "doc", "scale_results.md")
 PERFORMANCE = os.path.join(ROOT, "doc", "performance.md")
 # the block of doc/performance.md that holds the copy of the targets' table
@@ -160,7 +159,7 @@ def square_force(results, tag="square"):
 
 
 def targets(results):
-    """The targets of the issue on whole runs, each with its measured figure
+    """The performance targets on whole runs, each with its measured figure
     and whether it is met."""
     rows = []
 
@@ -212,10 +211,9 @@ def start_up(binary):
     every run spends before its work (the dynamic loader binding the
     symbols of deal.II and the libraries it brings, MPI_Init)."""
     best = float("inf")
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     for _ in range(5):
         t = time.time()
-        subprocess.run([binary, "--version"], capture_output=True, check=True, env=env)
+        launch([binary, "--version"], capture_output=True, check=True)
         best = min(best, time.time() - t)
     return best
 
@@ -380,7 +378,7 @@ def main():
             copy_targets(f.read())
         return
     os.makedirs(RES, exist_ok=True)
-    binaries = {"this": os.path.join(ROOT, "build", "fosls-contact")}
+    binaries = {"this": BIN}
     if a.base_rev:
         binaries["base"] = build_base(a.base_rev)
     start = start_up(binaries["this"])

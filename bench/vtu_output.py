@@ -19,11 +19,10 @@ import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from parallel import BIN, ROOT  # noqa: E402
-from scale import build_base  # noqa: E402
+from common import BIN, ENV, RESULTS, command
+from scale import build_base
 
-RES = os.path.join(ROOT, "bench", "results", "vtu_output")
+RES = os.path.join(RESULTS, "vtu_output")
 CASES = [("square", "square.prm", 9), ("cube", "cube3d.prm", 6)]
 
 
@@ -32,13 +31,12 @@ def run(binary, scene, level, out):
     one run of @p binary (the child waited for with os.wait4, whose rusage
     is that child's alone)."""
     shutil.rmtree(out, ignore_errors=True)
-    cmd = [binary, os.path.join(ROOT, "prm", scene), "--set", f"Geometry/Levels={level}",
-           "--set", f"Output/Directory={out}", "--set", "Output/Write vtu=true"]
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    cmd = command(scene, [f"Geometry/Levels={level}", f"Output/Directory={out}",
+                          "Output/Write vtu=true"], binary)
     log = out + ".screen"
     start = time.time()
     with open(log, "w") as screen:
-        process = subprocess.Popen(cmd, stdout=screen, stderr=subprocess.STDOUT, env=env)
+        process = subprocess.Popen(cmd, stdout=screen, stderr=subprocess.STDOUT, env=ENV)
         _, status, usage = os.wait4(process.pid, 0)
     wall = time.time() - start
     code = os.waitstatus_to_exitcode(status)

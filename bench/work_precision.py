@@ -32,9 +32,9 @@ import subprocess
 import sys
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BIN = os.path.join(ROOT, "build", "fosls-contact")
-RES = os.path.join(ROOT, "bench", "results", "work_precision")
+from common import BIN, RESULTS, ROOT, command, launch
+
+RES = os.path.join(RESULTS, "work_precision")
 DOC_CSV = os.path.join(ROOT, "doc", "work_precision.csv")
 
 CASE_CAP_S = 300.0      # no single case may take longer than this
@@ -234,19 +234,17 @@ def case(scene, cfg, level, group):
                  "Output/Write vtu": "false", "Output/Verbose": "false"})
     if prm == "hertz.prm":
         sets.setdefault("Geometry/Grading", "1")  # the study's ungraded half disc
-    cmd = [BIN, os.path.join(ROOT, "prm", prm)]
-    for k, v in sets.items():
-        cmd += ["--set", f"{k}={v}"]
+    cmd = command(prm, sets)
     row["binary_mtime"] = wait_for_binary()
     row["load1"] = round(os.getloadavg()[0], 2)
     t = time.time()
     try:
         try:
-            p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+            p = launch(cmd, capture_output=True, text=True, timeout=timeout)
         except OSError:  # relinked between the check and the start: once more
             row["binary_mtime"] = wait_for_binary()
             t = time.time()
-            p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+            p = launch(cmd, capture_output=True, text=True, timeout=timeout)
         row["wall_s"] = round(time.time() - t, 3)
         if p.returncode != 0:
             row["status"] = "error"
@@ -279,7 +277,7 @@ def wait_for_binary():
             if m == CHECKED:
                 return time.strftime("%H:%M:%S", time.localtime(m))
             if time.time() - m > 5:
-                subprocess.run([BIN, "--help"], capture_output=True, timeout=30)
+                launch([BIN, "--help"], capture_output=True, timeout=30)
                 CHECKED = m
                 return time.strftime("%H:%M:%S", time.localtime(m))
         except (OSError, subprocess.TimeoutExpired):
@@ -325,7 +323,7 @@ def main():
 
     # process start (library loading, MPI) without any work
     t = time.time()
-    subprocess.run([BIN, "--print-parameters"], capture_output=True)
+    launch([BIN, "--print-parameters"], capture_output=True)
     startup = time.time() - t
     git = subprocess.run(["git", "-C", ROOT, "describe", "--always", "--dirty"],
                          capture_output=True, text=True).stdout.strip()

@@ -1,7 +1,6 @@
 #!/usr/bin/env bash
-# Work-precision study (issue 4, part A): run every case of
-# bench/work_precision.py sequentially (at most ~31 minutes on a 2-core
-# machine), then write doc/work_precision.md, doc/work_precision.csv and
+# Work-precision study: run every case of bench/work_precision.py
+# sequentially (at most ~31 minutes on a 2-core machine), then write doc/work_precision.md, doc/work_precision.csv and
 # doc/figures/wp_*.png.
 #
 #   bench/work_precision.sh              # from any directory; the full study

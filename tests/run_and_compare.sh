@@ -4,8 +4,9 @@
 #   run_and_compare.sh unit  WORKDIR EXPECTED REL ABS -- EXE [ARGS...]
 #       Runs a unit test executable in a fresh WORKDIR; it must exit with 0,
 #       and its standard output must match EXPECTED (numdiff, relative
-#       tolerance REL, absolute tolerance ABS). The solver tests use this
-#       mode with EXE = python3 tests/solver/<name>.py FOSLS_CONTACT SRC.
+#       tolerance REL, absolute tolerance ABS). The solver and fuzz tests
+#       use this mode with EXE = python3 tests/<kind>/<name>.py FOSLS_CONTACT
+#       SRC.
 #
 #   run_and_compare.sh scene WORKDIR EXPECTED REL ABS FILTER -- EXE PRM [ARGS...]
 #       Runs `EXE PRM --set Output/Directory=out ARGS...` in a fresh WORKDIR
@@ -14,15 +15,22 @@
 #       screen output and the output directory into deterministic text that
 #       must match EXPECTED (numdiff as above).
 #
-#   run_and_compare.sh bad   WORKDIR REGEX -- EXE [ARGS...]
-#       Runs `EXE ARGS...` (prefixed by $FOSLS_LAUNCH if set) in a fresh,
-#       empty WORKDIR/run; it must exit
-#       non-zero (but not by a signal), print exactly one line on stderr that
-#       matches the extended regular expression REGEX, and write nothing
-#       (no output directory): WORKDIR/run must still be empty afterwards.
+#   run_and_compare.sh bad   WORKDIR TEST PROCESSES FOSLS_CONTACT
+#       Runs the command of the bad-input test file TEST in a fresh, empty
+#       WORKDIR/run; it must exit with 1 (an error all processes decide),
+#       print exactly one line on stderr that matches the extended regular
+#       expression of TEST, and write nothing: WORKDIR/run must still be
+#       empty afterwards. TEST holds comment lines (#), one line
+#       `error: REGEX` and one or more lines `run: COMMAND...` (joined
+#       into one bash command). The command runs with the variables of
+#       tests/bad_input/common.sh, $src (the repository), $tests, $bad
+#       (tests/bad_input), $mpirun, $fosls_binary (FOSLS_CONTACT) and the
+#       function `fosls`, which runs FOSLS_CONTACT with its arguments, on
+#       PROCESSES MPI processes if PROCESSES > 1 (mpirun --quiet: without
+#       mpirun's own report of the non-zero exit on stderr).
 #
-# numdiff and python3 are taken from $NUMDIFF and $PYTHON if set (ctest
-# sets them), else from PATH.
+# numdiff, python3 and mpirun are taken from $NUMDIFF, $PYTHON and $MPIRUN
+# if set (ctest sets them), else from PATH.
 #
 # To regenerate an expected file after checking the new numbers,
 # copy WORKDIR/output over it (never blindly).
@@ -84,13 +92,32 @@ case "$mode" in
     ;;
 
   bad)
-    regex=$1
-    shift
-    [ "$1" = "--" ] || fail "usage"
-    shift
+    test_file=$1 processes=$2 fosls_binary=$3
+    regex= command=
+    while IFS= read -r line; do
+      case "$line" in
+        "#"* | "") ;;
+        "error: "*) regex=${line#error: } ;;
+        "run: "*) command+=" ${line#run: }" ;;
+        *) fail "$test_file: a line that is not a comment, 'error: REGEX' or 'run: COMMAND': $line" ;;
+      esac
+    done < "$test_file"
+    [ -n "$regex" ] && [ -n "$command" ] || fail "$test_file: no 'error:' or no 'run:' line"
+    bad=$(cd "$(dirname "$test_file")" && pwd)
+    tests=$(dirname "$bad")
+    src=$(dirname "$tests")
+    mpirun=${MPIRUN:-mpirun}
+    fosls() {
+      if [ "$processes" -gt 1 ]; then
+        "$mpirun" --quiet --oversubscribe -np "$processes" "$fosls_binary" "$@"
+      else
+        "$fosls_binary" "$@"
+      fi
+    }
+    # shellcheck source=bad_input/common.sh
+    . "$bad/common.sh"
     rm -rf "$workdir" && mkdir -p "$workdir/run" && cd "$workdir/run" || fail "cannot create $workdir"
-    # shellcheck disable=SC2086
-    ${FOSLS_LAUNCH:-} "$@" > ../stdout 2> ../stderr
+    eval "$command" > ../stdout 2> ../stderr
     rc=$?
     echo "exit code: $rc"
     echo "stderr:"

@@ -341,6 +341,20 @@ namespace FoslsContact
   }
 
 
+  std::string
+  DirectorySwap::directory_under_output_name(const fs::path &directory)
+  {
+    for (const auto &entry : FileSystem::list(directory))
+      {
+        mode_t mode = 0;
+        if (is_output_name(entry) && FileSystem::present(directory / entry, &mode) &&
+            S_ISDIR(mode))
+          return entry;
+      }
+    return "";
+  }
+
+
   int
   DirectorySwap::make_record(const fs::path &staging, const std::string &parameter)
   {
@@ -466,6 +480,11 @@ namespace FoslsContact
     if (has_old && !foreign_entry(directory).empty())
       keep("has become a directory that holds '" + ErrorLine::quote(foreign_entry(directory)) +
            "', which fosls-contact did not write, during the run; the program does not replace it");
+    if (has_old && !directory_under_output_name(directory).empty())
+      keep("has come to hold a directory '" +
+           ErrorLine::quote(directory_under_output_name(directory)) +
+           "' under the name of an output file during the run; the program does not "
+           "replace it");
     const Identity              old_id = identity(directory);
     const std::set<std::string> old_listed =
       has_old ? program_files(directory) : std::set<std::string>();

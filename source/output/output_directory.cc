@@ -266,6 +266,13 @@ namespace FoslsContact
       fail("exists and holds '" + ErrorLine::quote(entry) +
            "', which fosls-contact did not write (the directory has no " + manifest_name +
            "); name a new or empty directory, or one fosls-contact wrote");
+    // a directory of the user's under an output file's name could neither
+    // be carried over beside the new file nor be removed
+    const std::string blocking = DirectorySwap::directory_under_output_name(directory);
+    if (!blocking.empty())
+      fail("holds a directory '" + ErrorLine::quote(blocking) +
+           "' under the name of an output file, which the run would write; rename or "
+           "move it");
   }
 
 

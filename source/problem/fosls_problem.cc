@@ -369,7 +369,7 @@ namespace FoslsContact
           << J.total << " (eq " << J.eq << ", const " << J.constitutive
           << ", compl " << J.complementarity << ")" << std::defaultfloat
           << std::endl;
-    run_summary.note_functional_round_off(J.total, row.functional_start, *indicators);
+    run_summary.add_round_off(summary, J.total, row.functional_start, *indicators);
     row.relative_error_estimate =
       run_summary.add_error_estimate(summary, post, cartesian, *indicators);
     run_summary.add_forces(summary, forces, force);

@@ -3,6 +3,7 @@
 #include <fosls_contact/assembly/fosls_assembler.h>
 #include <fosls_contact/base/collective_error.h>
 #include <fosls_contact/base/json.h>
+#include <fosls_contact/problem/conditioning.h>
 #include <fosls_contact/problem/data_check.h>
 #include <fosls_contact/problem/problem_checks.h>
 #include <fosls_contact/qp/definiteness_check.h>
@@ -175,22 +176,14 @@ namespace FoslsContact
         if (!gathered.here())
           return;
         result = DefinitenessCheck::run(gathered.qp());
-        // (a reference length or stress far from the body's size and
-        // stresses makes the dimensionless problem badly scaled: named
-        // first where the scene sets one)
-        const auto &      scaling = parameters.scaling;
-        const std::string cause =
-          scaling.reference_length > 0 || scaling.reference_stress > 0 ?
-            "check that 'Scaling/Reference length' and 'Reference stress' are of the "
-            "order of the body's size and stresses (or auto), and that the 'Functional "
-            "weights' are not many orders of magnitude apart" :
-            "check that the 'Functional weights' are not many orders of magnitude apart";
         AssertThrow(result.interior_definite,
                     ExcMessage("the functional's matrix without its contact DoFs is not "
                                "positive definite in floating point on level " +
                                std::to_string(level + 1) +
                                " (its Cholesky factorization failed): the functional is too "
-                               "badly conditioned for double precision; " + cause));
+                               "badly conditioned for double precision: " +
+                               Conditioning<dim>::advice(parameters, scene,
+                                                         discretization.get_triangulation())));
       });
       // (every process learns the outcome, so that every process stops
       // with the same line)
@@ -318,6 +311,25 @@ namespace FoslsContact
           << std::setprecision(4) << result.min_relative_eigenvalue
           << "; largest definite C_compl " << limit_text(checked.c_compl * result.limit_factor, level)
           << std::endl;
+    // No C_compl makes a Schur complement definite whose least eigenvalue
+    // is at the round-off of its entries, or which the complementarity
+    // term does not lower (no finite limit): the cause is the conditioning
+    // of the rest of the functional.
+    AssertThrow(result.definite() ||
+                  (std::isfinite(accepted) && accepted > 0 &&
+                   std::abs(result.min_relative_eigenvalue) > round_off_eigenvalue),
+                ExcMessage("the functional's contact Schur complement is " +
+                           std::string(std::abs(result.min_relative_eigenvalue) <=
+                                           round_off_eigenvalue ?
+                                         "singular to round-off" :
+                                         "indefinite without its complementarity term") +
+                           " on level " + std::to_string(level + 1) +
+                           " (smallest relative eigenvalue " +
+                           json_number(result.min_relative_eigenvalue) +
+                           ", which no value of C_compl changes): the functional is too badly "
+                           "conditioned for double precision: " +
+                           Conditioning<dim>::advice(parameters, scene,
+                                                     discretization.get_triangulation())));
     std::ostringstream weights;
     weights << "C_eq = " << w.c_eq << ", C_const = " << w.c_const
             << ", C_compl = " << w.c_compl;

@@ -6,6 +6,7 @@
 #include <fosls_contact/output/contact_table.h>
 #include <fosls_contact/output/contact_zone.h>
 #include <fosls_contact/output/hertz_comparison.h>
+#include <fosls_contact/problem/conditioning.h>
 #include <fosls_contact/problem/run_summary.h>
 #include <fosls_contact/problem/solver_choice.h>
 
@@ -437,10 +438,33 @@ namespace FoslsContact
 
   template <int dim>
   void
-  RunSummary<dim>::note_functional_round_off(const double                J,
-                                             const double                J_start,
-                                             const ErrorIndicators<dim> &indicators) const
+  RunSummary<dim>::add_round_off(Summary &                   summary,
+                                 const double                J,
+                                 const double                J_start,
+                                 const ErrorIndicators<dim> &indicators) const
   {
+    const IterationRecord &last     = monitor.get_history().back();
+    const double           relative = last.functional_round_off /
+                                std::max(std::abs(last.functional.total),
+                                         std::numeric_limits<double>::min());
+    summary["functional_round_off"] = number(relative);
+    const bool limited              = relative > round_off_warning;
+    summary["round_off_limited"]    = limited ? "true" : "false";
+    if (limited)
+      {
+        const std::string cause =
+          Conditioning<dim>::advice(parameters, scene, discretization.get_triangulation());
+        std::ostringstream text;
+        text << "the round-off of J is " << std::setprecision(2) << relative
+             << " of J: the functional is too badly conditioned for double precision to "
+                "resolve the solution to the digits asked (force and error estimate "
+                "included); "
+             << cause;
+        pcout << "Warning: " << text.str() << std::endl;
+        // (the cause text has no quotes or backslashes)
+        summary["round_off_cause"] = "\"" + cause + "\"";
+      }
+
     // J is a quadratic form of the assembled matrix, x^T A x - 2 b^T x + c;
     // the sum of the cellwise parts integrates the residuals themselves.
     // They part where the form's round-off reaches J: entries of C_eq h^-2

@@ -243,6 +243,7 @@ namespace FoslsContact
     {
       CompensatedSum value;
       double         round_off = 0;
+      double         scale     = 0; // of J's terms: sum |x_i| (|A||x| / 2 + |b|)_i
     };
     std::vector<double> d_terms(n);
     const auto          partial =
@@ -260,13 +261,15 @@ namespace FoslsContact
         d_terms[i] = d.local_element(i) * Ad;
         if (role[i] != DoFRole::fixed && matrix.diag_element(i) > 0)
           p.round_off += s * s / matrix.diag_element(i);
+        p.scale += std::abs(x.local_element(i)) * 0.5 * (s + std::abs(rhs.local_element(i)));
       });
     CompensatedSum value;
-    double         round_off = 0, d_norm_square = 0;
+    double         round_off = 0, d_norm_square = 0, scale = 0;
     for (const auto &p : partial)
       {
         value.add(p.value);
         round_off += p.round_off;
+        scale += p.scale;
       }
     for (const double t : d_terms)
       d_norm_square += t;
@@ -276,6 +279,9 @@ namespace FoslsContact
     m.correction =
       std::sqrt(std::max(0., Utilities::MPI::sum(d_norm_square, get_communicator())));
     m.round_off = round_off_from(round_off, x.size());
+    m.functional_round_off =
+      std::numeric_limits<double>::epsilon() *
+      (Utilities::MPI::sum(scale, get_communicator()) + std::abs(constant));
     return m;
   }
   std::size_t

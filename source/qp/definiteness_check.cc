@@ -28,6 +28,35 @@ namespace FoslsContact
     }
 
     /**
+     * Whether the Cholesky factorization of @p M succeeds: the test sygv
+     * makes before its eigenvalues, made here first because deal.II's
+     * sygv prints a line to stderr when it fails, beside the one line of
+     * the error that names the cause.
+     */
+    bool
+    cholesky_succeeds(const LAPACKFullMatrix<double> &M)
+    {
+      const unsigned int  n = M.m();
+      FullMatrix<double>  factor(n, n);
+      for (unsigned int r = 0; r < n; ++r)
+        {
+          for (unsigned int c = 0; c <= r; ++c)
+            {
+              double sum = M(r, c);
+              for (unsigned int k = 0; k < c; ++k)
+                sum -= factor(r, k) * factor(c, k);
+              if (c < r)
+                factor(r, c) = sum / factor(c, c);
+              else if (!(sum > 0))
+                return false;
+              else
+                factor(r, r) = std::sqrt(sum);
+            }
+        }
+      return true;
+    }
+
+    /**
      * DefinitenessCheck::limit_factor of the scaled Schur complement
      * @p S on the @p contact DoFs of @p qp: M_CC, the complementarity part
      * on them, scaled as S is (its diagonal is zero: the term couples a
@@ -63,6 +92,9 @@ namespace FoslsContact
       for (unsigned int r = 0; r < nc; ++r)
         for (unsigned int c = 0; c < r; ++c)
           S0(r, c) = S0(c, r) = 0.5 * (S0(r, c) + S0(c, r));
+      // (S_0 itself indefinite in floating point)
+      if (!cholesky_succeeds(S0))
+        return std::numeric_limits<double>::quiet_NaN();
       std::vector<Vector<double>> no_vectors;
       try
         {

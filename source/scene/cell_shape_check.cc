@@ -4,10 +4,23 @@
 #include <fosls_contact/scene/cell_shape_check.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace FoslsContact
 {
+  template <int dim>
+  double
+  CellShapeCheck<dim>::aspect_ratio(const typename Triangulation<dim>::cell_iterator &cell)
+  {
+    double longest = 0;
+    for (unsigned int l = 0; l < GeometryInfo<dim>::lines_per_cell; ++l)
+      longest = std::max(longest, cell->line(l)->diameter());
+    const double thickness = cell->measure() / std::pow(longest, double(dim - 1));
+    return thickness > 0 ? longest / thickness : std::numeric_limits<double>::infinity();
+  }
+
+
   template <int dim>
   void
   CellShapeCheck<dim>::check(const Triangulation<dim> &  tria,
@@ -20,9 +33,10 @@ namespace FoslsContact
     // cell, on every level: a corner at or below 0 is an inverted (or
     // degenerate) cell, where the FOSLS functional is no longer a sum of
     // squares: J can go negative and the answer far off while the area of
-    // every coarse cell is positive (doc/performance.md, "Figures behind the code"). Refinement
-    // moves the boundary vertices onto the circle, so the finer levels are
-    // checked too.
+    // every coarse cell is positive (doc/performance.md, "Figures behind
+    // the code"). Refinement moves the boundary vertices onto the circle,
+    // so the finer levels are checked too.
+    check_aspect_ratios(tria, geometry, mesh_file, length);
     unsigned int first_bad_level = numbers::invalid_unsigned_int;
     Point<dim>   bad_center;
     for (const auto &cell : tria.cell_iterators())
@@ -84,6 +98,43 @@ namespace FoslsContact
                                    ": the mesh has " + where + "; use a smaller grading"));
           }
       }
+  }
+
+
+  template <int dim>
+  void
+  CellShapeCheck<dim>::check_aspect_ratios(const Triangulation<dim> &  tria,
+                                           const Parameters::Geometry &geometry,
+                                           const MeshFile<dim> *       mesh_file,
+                                           const double                length)
+  {
+    // (the coarse cells are the same on every process, and so the decision)
+    double     worst = 0;
+    Point<dim> where;
+    for (const auto &cell : tria.cell_iterators_on_level(0))
+      if (const double aspect = aspect_ratio(cell); aspect > worst)
+        {
+          worst = aspect;
+          where = cell->center();
+        }
+    if (worst < aspect_limit)
+      return;
+    // (the cell shape check names an inverted cell, whose thickness is 0)
+    if (!std::isfinite(worst))
+      return;
+    std::ostringstream text;
+    text.precision(2);
+    text << "has a cell of aspect ratio " << worst << " at (";
+    for (unsigned int d = 0; d < dim; ++d)
+      text << (d ? ", " : "") << where[d] * length;
+    text << "): double precision does not resolve the functional on cells of "
+         << aspect_limit << ":1 and more";
+    AssertThrow(geometry.shape != Parameters::Geometry::Shape::file,
+                ExcMessage("the " + (mesh_file ? mesh_file->name() : std::string("mesh file")) +
+                           " " + text.str() + "; split the long edges of its cells"));
+    AssertThrow(false,
+                ExcMessage("the mesh " + text.str() +
+                           "; check 'Geometry' (more 'Box subdivisions' along the long edges)"));
   }
 
 

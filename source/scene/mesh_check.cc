@@ -1124,7 +1124,73 @@ namespace FoslsContact
             }
         }
 
+    if (dim == 3)
+      {
+        const std::string twisted = check_twist(mesh_cells, sides[1]);
+        if (!twisted.empty())
+          return twisted;
+      }
     return check_geometry(mesh_cells);
+  }
+
+
+  std::string
+  MeshCheck::check_twist(const std::vector<unsigned int> &             mesh_cells,
+                         const std::vector<std::vector<unsigned int>> &sides) const
+  {
+    // A hexahedron whose upper face is listed rotated against its lower one
+    // keeps a positive Jacobian at its corners (and, for a quarter turn,
+    // inside: its least value is half the cube's), so CellShapeCheck lets
+    // it pass; but its sides join nodes across a diagonal of the body, each
+    // bending by 90 degrees or more, and its neighbours no longer share
+    // sides with it: the mesh is not the body the file describes. The bend
+    // of a side is the angle between the normals of its two triangles,
+    // across either diagonal: a quarter turn bends a side of a box cell by
+    // 90 degrees (a long thin box) to 172 (a flat one), half a turn or a
+    // reversed face by 180. A side of a sound mesh is flat, or curved with
+    // the surface it approximates by less: a coarse mesh of a ball in 12
+    // cells (prm/meshes/quarter_ball.msh) bends a side by 64 degrees.
+    constexpr double limit_degrees = 85;
+    const auto       minus         = [](const Point3 &a, const Point3 &b) {
+      return Point3{{a[0] - b[0], a[1] - b[1], a[2] - b[2]}};
+    };
+    const auto normal = [&](const Point3 &a, const Point3 &b, const Point3 &c) {
+      const Point3 u = minus(b, a), v = minus(c, a);
+      return Point3{
+        {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]}};
+    };
+    const auto angle = [](const Point3 &m, const Point3 &n) {
+      const double mn = m[0] * n[0] + m[1] * n[1] + m[2] * n[2];
+      const double mm = m[0] * m[0] + m[1] * m[1] + m[2] * m[2];
+      const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+      // (a degenerate triangle: CellShapeCheck names the cell)
+      if (!(mm > 0 && nn > 0))
+        return 0.;
+      return std::acos(std::max(-1., std::min(1., mn / std::sqrt(mm * nn)))) * 180 / M_PI;
+    };
+    for (const auto c : mesh_cells)
+      for (const auto &side : sides)
+        {
+          // the side's corners in their cyclic order
+          const Point3 &a = nodes[cells[c].nodes[side[0]]].x, &b = nodes[cells[c].nodes[side[1]]].x,
+                       &p = nodes[cells[c].nodes[side[2]]].x, &d = nodes[cells[c].nodes[side[3]]].x;
+          const double bend = std::max(angle(normal(a, b, p), normal(a, p, d)),
+                                       angle(normal(b, p, d), normal(b, d, a)));
+          if (bend > limit_degrees)
+            {
+              std::vector<std::string> of_nodes;
+              for (const auto i : side)
+                of_nodes.push_back(std::to_string(nodes[cells[c].nodes[i]].label));
+              std::ostringstream degrees;
+              degrees << std::lround(bend);
+              return "has a twisted cell: the side of the " + node_word + "s " +
+                     listed(of_nodes) + " of " + describe(cells[c]) + " bends by " +
+                     degrees.str() + " degrees across a diagonal (more than " +
+                     std::to_string(int(limit_degrees)) +
+                     "; its nodes listed in the wrong order?)";
+            }
+        }
+    return "";
   }
 
 

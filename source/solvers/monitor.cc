@@ -120,16 +120,20 @@ namespace FoslsContact
   {
     // Every step of the monotone solvers (projected Gauss-Seidel, the multigrid
     // cycles and their Newton steps) lowers J or leaves it, so a J that grows
-    // by more than its evaluation error over an iteration means the solver's
-    // local model is not the functional's; going on would hand the user an
-    // iterate growing without bound (doc/performance.md, "Figures behind the
-    // code"). The active set method is no descent method and does not ask for
-    // the check.
+    // by more than its round-off over an iteration means the solver's local
+    // model is not the functional's; going on would hand the user an iterate
+    // growing without bound (doc/performance.md, "Figures behind the code").
+    // The active set method is no descent method and does not ask for the
+    // check.
     if (!detect_divergence || history.size() < 2)
       return false;
     const double previous = history[history.size() - 2].functional.total,
                  current  = history.back().functional.total;
-    return current > previous + divergence_tolerance * std::abs(previous);
+    // (an increase within J's round-off is none: where the matrix's
+    // round-off reaches J, as on thin cells, the steps at the round-off
+    // floor of the corrections move J up and down within it)
+    return current > previous + std::max(divergence_tolerance * std::abs(previous),
+                                          history.back().functional_round_off);
   }
 
 
@@ -144,6 +148,7 @@ namespace FoslsContact
     r.functional   = measures.functional;
     r.correction   = measures.correction;
     r.round_off    = measures.round_off;
+    r.functional_round_off = measures.functional_round_off;
     std::vector<bool> active = qp.active_set(x);
     r.active       = qp.n_active(active);
     r.violation    = qp.max_violation(x);

@@ -30,12 +30,13 @@
 #   to those of the one-process run's.
 # The level DoFs of a replicated mesh keep deal.II's numbering, which
 # depends on the partition, so the order of every sum differs between
-# process counts. Measured (Nov 2026) on the Hertz half disc, 6 steps, 1
+# process counts. Measured on the Hertz half disc, 6 steps, 1
 # against 2 processes: the meshes equal at every step, J equal to the 12
 # printed digits, the forces to 1e-11 .. 7e-10, the cycles equal or one
 # apart (47/48 on the first mesh, 37/38 on the third). Only the
 # one-process counts are printed (those of N processes are asserted), so
 # the output does not depend on round-off.
+# ctest: timeout=600 mpirun
 import csv
 import os
 import re

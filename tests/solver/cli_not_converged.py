@@ -1,8 +1,9 @@
 # A run that does not converge exits with code 2 (README, "Exit codes"),
 # writes its files with "converged": false in summary.json and prints one
-# line on stderr saying so (it exited with 0 before). The square with
+# line on stderr saying so. The square with
 # Solver/Max iterations = 1, on one process and on two; a converged run
 # exits with 0 and prints nothing on stderr.
+# ctest: timeout=120
 import json
 import os
 import sys

@@ -4,8 +4,8 @@
 # version, which summary.json records too; a verbose run prints one line
 # with its time as each phase ends (set-up, assembly, checks, initial
 # guess, solver set-up, solve, output), a quiet one none; --print-parameters
-# with a scene and --set prints the scene's values (it printed the defaults
-# before).
+# with a scene and --set prints the scene's values, not the defaults.
+# ctest: timeout=120
 import json
 import os
 import re

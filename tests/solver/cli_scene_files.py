@@ -1,11 +1,11 @@
 # Scene files (README, "Command line"): a scene file that cannot be read is
-# reported with its real cause (a FIFO was "does not exist", an unreadable
-# file "not found"); a garbage file gets one line without raw control
-# bytes (they were echoed to the terminal); a JSON scene written by
-# --print-parameters is read back and gives the run of the .prm scene (it
-# failed with "entry <C\xC0mpl>"); a scene that includes itself is one line
-# (it crashed after thousands of nested frames), includes are relative to
-# the including file.
+# reported with its real cause (a FIFO, an unreadable file: not "does not
+# exist" or "not found"); a garbage file gets one line without raw control
+# bytes (which would reach the terminal); a JSON scene written by
+# --print-parameters is read back and gives the run of the .prm scene; a
+# scene that includes itself is one line (not thousands of nested reads),
+# includes are relative to the including file.
+# ctest: timeout=120
 import json
 import os
 import subprocess

@@ -1,8 +1,10 @@
 # A closed standard output (`fosls-contact scene.prm | head -1`) does not
 # kill the run: it goes on without its screen output, writes its files and
-# exits with 0 (SIGPIPE killed it before, exit code -13, without files).
+# exits with 0 (SIGPIPE's default action would kill it, exit code -13,
+# without files).
 # Twice: the reading end closed before the start (the first line fails),
 # and after the first line, as `head -1` does.
+# ctest: timeout=120
 import os
 import subprocess
 import sys

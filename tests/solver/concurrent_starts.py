@@ -1,9 +1,10 @@
 # Processes started at the same time, without mpirun, all start: each runs
-# as an isolated Open MPI singleton, and those named their session
-# directories the same, so that one process's clean-up in MPI_Finalize
-# removed the directory another's MPI_Init was creating (the start then
-# failed: "A call to mkdir was unable to create the desired directory"; 1
-# in 160 runs, four at a time). The program now creates none (app/main.cc).
+# as an isolated Open MPI singleton, and isolated singletons name their
+# session directories the same, so that one process's clean-up in
+# MPI_Finalize can remove the directory another's MPI_Init is creating (the
+# start then fails: "A call to mkdir was unable to create the desired
+# directory"; 1 in 160 runs, four at a time). The program creates none
+# (app/main.cc).
 # Four streams of 40 runs of the square with 2 levels, side by side: every
 # run ends normally with nothing on stderr.
 import os

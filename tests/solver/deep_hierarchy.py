@@ -1,11 +1,8 @@
 #!/usr/bin/env python3
-# A deep hierarchy
-# in 2D: the square (prm/square.prm, default solver) on 6, 7, 8 and 9
-# levels (6402 to 395266 DoFs, a hierarchy of 9 levels). Measured (Nov
-# 2026, 2 cores, another job sharing the machine): the whole test 26 s, the
-# 9-level run about 15 s (solve 8 s, peak memory 1.5 GB). (Until the
-# smoother read contiguous patch rows and the stopping rule knew the
-# round-off floor it took 62-150 s and was a "long" test.)
+# A deep hierarchy in 2D: the square (prm/square.prm, default solver) on
+# 6, 7, 8 and 9 levels (6402 to 395266 DoFs, a hierarchy of 9 levels).
+# Measured on 2 cores with another job sharing the machine: the whole test
+# 26 s, the 9-level run about 15 s (solve 8 s, peak memory 1.5 GB).
 # Checks per level: converged within 10 iterations (measured 3, 4, 4, 3;
 # levels 8 and 9 end at the round-off floor), no NaN/Inf, energy_increases
 # == 0, every iterate feasible, KKT residual < 1e-10, all 2^(J-1) + 1
@@ -13,6 +10,7 @@
 # the extrapolation of levels 6, 7, 8: F_9 ~ F_8 + q (F_8 - F_7) with
 # q = (F_8 - F_7) / (F_7 - F_6) (measured q = 0.36, F_9 within 6e-7 of
 # the prediction; asserted 1e-5), and the level differences must shrink.
+# ctest: timeout=900
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

@@ -24,9 +24,9 @@
 # iterate feasible, and the reference's KKT point: force and J to 1e-8
 # relative (measured <= 3.8e-9), KKT residual < 1e-8, same number of
 # active constraints. The penetrating start uses Solver/Tolerance = 1e-10
-# (at the default 1e-8 J was 1.03e-8 off), the curved obstacles 1e-11
-# (they end at the round-off floor; at 1e-8 their slow rate left the force
-# 7.9e-9 and 9e-8 off, at 1e-10 1.1e-8).
+# (at the default 1e-8 J is 1.03e-8 off), the curved obstacles 1e-11
+# (they end at the round-off floor; at 1e-8 their slow rate leaves the
+# force 7.9e-9 and 9e-8 off, at 1e-10 1.1e-8).
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

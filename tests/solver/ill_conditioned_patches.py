@@ -3,13 +3,14 @@
 # smoother are badly conditioned (tests/unit/spd_inverse: condition number
 # 1.3e9 scaled to a unit diagonal). The patch inverses come from Cholesky
 # factors (invert_spd), which keeps them positive definite; an inverse by
-# elimination was indefinite there, and the first cycle raised J by orders
-# of magnitude (the run ended as diverged).
+# elimination is indefinite there, and the first cycle raises J by orders
+# of magnitude (the run ends as diverged).
 #  - the default solver (Newton-accelerated cycle): converges, J never
 #    increases, every iterate feasible, and the Hertz pressure error is
 #    below the 3-level run's (0.132);
 #  - the plain W(3,3) cycle, 3 cycles from a zero start: no energy
 #    increase, J decreasing.
+# ctest: timeout=600 mpirun
 import os
 import sys
 

@@ -4,8 +4,7 @@
 # DoFs) with lambda = 1, 1e4, 1e8 and inf, default solver, from the
 # default start (coarse solution) and from a zero start. Checks per run:
 # converged within the stated bound (coarse start: 6 iterations, measured
-# 3; zero start: 10 iterations, measured 5-6; before the round-off floor
-# estimate and the CG steps to a 1e-3 reduction it was 11-23), no NaN/Inf,
+# 3; zero start: 10 iterations, measured 5-6), no NaN/Inf,
 # energy_increases == 0, feasible iterates, and the active set solver's
 # KKT point to 1e-8 relative in force and J (coarse start; zero start
 # with Solver/Tolerance = 1e-10). Then lambda -> inf:

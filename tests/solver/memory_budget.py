@@ -3,8 +3,8 @@
 # (MemoryBudget), in one line with the estimate, the memory available and
 # what limits it, and the number of levels that fits.
 #  - prm/hertz.prm with Geometry/Levels = 10 (about 100 million DoFs, some
-#    170 GB at the measured bytes per DoF): refused within seconds (where
-#    it was killed by the kernel's out-of-memory killer after minutes),
+#    170 GB at the measured bytes per DoF): refused within seconds (not
+#    killed by the kernel's out-of-memory killer after minutes),
 #    exit code 1, no output directory, the line naming the estimate and
 #    'Geometry/Levels'.
 #  - Under an address-space limit (ulimit -v 3 GB): the square with 11

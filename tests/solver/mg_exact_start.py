@@ -4,11 +4,11 @@
 # 0.01 has no contact; its exact solution, the rigid translation by
 # (0, -0.01) with zero stress, is discrete, so J* = 0 and the default
 # start (the level-1 solution, interpolated) is already exact. Every
-# correction is then round-off (~1e-16). Until Nov 2026 the stopping rule,
-# which measures corrections relative to the first one (itself round-off),
-# was never met ("NOT converged after 200 iterations"); now a correction
-# within 10x of ConstrainedQP::round_off_correction ends the run: measured
-# 1 iteration for each of the three solvers below.
+# correction is then round-off (~1e-16). A stopping rule that measures
+# corrections relative to the first one (itself round-off) is never met
+# here ("NOT converged after 200 iterations"); a correction within 10x of
+# ConstrainedQP::round_off_correction ends the run: measured 1 iteration
+# for each of the three solvers below.
 # Reproduction: fosls-contact prm/square.prm --set Geometry/Levels=5
 #   --set Data/Gap=0.02
 # Checks: default solver, plain cycle (Krylov steps = 0) and nested

@@ -9,10 +9,10 @@
 # |sigma - sigma_h|_Hdiv agree with the direct solve to 1e-8 relative; no
 # contact (active 0, force 0, "no contact boundary" printed); converged
 # with energy_increases == 0; the error norms are printed (6 digits).
-# Measured (Nov 2026): the largest relative difference is 3.0e-10
-# (default 5 iterations, plain cycle 14-15). The L2 error of u is what the
-# energy norm controls least: with the default tolerance 1e-8 it differed by
-# 2.4e-7 at 6 levels while J, the H1 and H(div) errors agreed to 4e-10.
+# Measured: the largest relative difference is 3.0e-10 (default 5
+# iterations, plain cycle 14-15). The L2 error of u is what the energy norm
+# controls least: with the default tolerance 1e-8 it differs by 2.4e-7 at
+# 6 levels while J, the H1 and H(div) errors agreed to 4e-10.
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

@@ -1,14 +1,14 @@
 #!/usr/bin/env python3
 # The round-off floor detection must not end slowly converging runs
-# early. Until Nov 2026 Monitor::report() stopped when the last 4
-# corrections were all below 1e-6 of the first and none below half of the
-# smallest before them, which a steady slow decrease also satisfies:
+# early. A rule that stops when the last 4 corrections are all below 1e-6
+# of the first and none below half of the smallest before them is also met
+# by a steady slow decrease:
 #  - the square on the tilted obstacle (prm/square.prm, 5 levels, Data/
 #    Obstacle normal = 0.3; -1) from a zero start: "converged" after 51
 #    iterations with the force 7.7e-6 off the active set solver's;
 #  - the square (5 levels, lambda = 1) from a zero start with
 #    Solver/Tolerance = 1e-10: stopped after 23 iterations, force 1.8e-7 off.
-# Now the floor is an estimate from the iterate (ConstrainedQP::
+# The floor is therefore an estimate from the iterate (ConstrainedQP::
 # round_off_correction), stagnation counts only within 1000x of it, and
 # the CG of the default solver runs to a residual reduction of 1e-3:
 # measured 5 iterations each, forces within 1e-9.
@@ -16,8 +16,8 @@
 # correction, not the error, below it) or by the stagnation check: the
 # plain W-cycle (Krylov steps = 0) from a zero start on the square with
 # contact at one end (gap 0.02 (1 - x), 4 levels) creeps at about 0.99 per
-# cycle; judged by the correction alone it stopped after 1070 iterations
-# with the force 8.5e-6 off. Both stops take the rate into account (the
+# cycle; judged by the correction alone it would stop after 1070
+# iterations with the force 8.5e-6 off. Both stops take the rate into account (the
 # error is about rho/(1-rho) times the correction) and stagnation needs a
 # correction that went up: measured 1368 iterations, J equal to all
 # digits, force 1.2e-7.

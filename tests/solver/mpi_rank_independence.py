@@ -23,8 +23,7 @@
 # Every level's DoFs are numbered by their support points within each
 # process's owned range (LevelDoFNumbering), so the numbering,
 # and with it the order of every sum, differs between process counts.
-# Measured (Nov 2026, with that numbering; the forces as printed in
-# summary.json, 12 digits): the iteration counts are equal in every case;
+# Measured (the forces as printed in summary.json, 12 digits): the iteration counts are equal in every case;
 # the forces agree to every printed digit on the square with 2 processes,
 # for projected Gauss-Seidel and with the active set solver, to 4e-12 on
 # the square with 4 processes and on the cube, to 7e-12 and 4e-11 with
@@ -32,6 +31,7 @@
 # solver there (2 and 3 processes). Only the one-process counts are printed
 # (those of N processes are asserted), so the output does not depend on
 # round-off.
+# ctest: timeout=900 mpirun
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

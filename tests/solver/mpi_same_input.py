@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 # Every process of an MPI run works on the same input (SameInput): started
 # with different inputs, the processes stop with one line naming what
-# differs and exit code 1, where they waited for each other until killed
-# (or, with another output directory or push, ran to exit code 0 on
-# inconsistent data).
+# differs and exit code 1 (without the check they wait for each other
+# until killed, or, with another output directory or push, run to exit
+# code 0 on inconsistent data).
 #  - mpirun -np 1 A : -np 1 B with another Geometry/Levels, and with
 #    --version on one process only: "another command line";
 #  - the same command in two working directories (mpirun -wdir) whose

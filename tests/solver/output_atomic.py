@@ -5,11 +5,11 @@
 # until a run makes fewer renames than that. After every run the directory
 # holds the files of one run only: summary.json, used_parameters.prm,
 # contact.csv, convergence.csv and the vtu piece agree on the number of
-# levels. (Found by probing: the files were renamed into place one at a
-# time, six renames; killed before the third, the directory held the new
-# solution next to the old summary.json.) A write that fails with ENOSPC:
-# exit code 1, one line naming Output/Directory, the directory unchanged, no
-# staging directory or lock file left (one with 5-6 files stayed before). A
+# levels (files renamed into place one at a time, killed before the third
+# rename, would leave the new solution next to the old summary.json). A
+# write that fails with ENOSPC: exit code 1, one line naming
+# Output/Directory, the directory unchanged, no staging directory or lock
+# file left. A
 # filesystem without RENAME_EXCHANGE: the fallback (two renames) publishes
 # the files and keeps the user's file.
 import os

@@ -1,10 +1,11 @@
 # The output directory holds this run's files only: a run into a directory
 # an earlier run wrote removes the solution files it does not replace
-# (found by probing: a run on 1 process after one on 2 left
-# solution_0000.1.vtu, a piece the new .pvtu does not list, and Write vtu =
-# false left the old solution next to the new summary). Runs of the square,
+# (a run on 1 process after one on 2 must not leave solution_0000.1.vtu, a
+# piece the new .pvtu does not list, nor Write vtu = false the old solution
+# next to the new summary). Runs of the square,
 # 2 levels: on 2 processes, then on 1 into the same directory, then with
 # Write vtu = false; every time the .pvtu lists exactly the pieces present.
+# ctest: timeout=120 mpirun
 import os
 import re
 import sys

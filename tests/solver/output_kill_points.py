@@ -8,11 +8,12 @@
 # the next run, and nothing is left beside it (README, "How the output
 # files appear"). The kill point goes from the first call to the first one
 # the run does not reach, with RENAME_EXCHANGE and with the two renames of
-# a filesystem without it. (Found by probing: killed right after the
-# exchange, the user's plots/ stayed in the hidden staging directory, and
-# no later run brought it back.) Then, for the kill right after the
+# a filesystem without it (killed right after the exchange, the user's
+# plots/ is in the hidden staging directory, and the next run must bring it
+# back). Then, for the kill right after the
 # exchange, the next run is killed too, before each of the calls with
 # which it repairs the directory, and a third run checks the directory.
+# ctest: timeout=600
 import os
 import re
 import sys

@@ -1,13 +1,13 @@
 # Two runs into one Output/Directory at the same time: the second fails at
 # once (exit code 1, one line naming Output/Directory), the first ends
-# normally with its own files. (Found by probing: both exited with 0 and the
-# directory held one run's .vtu next to the other's summary.json.) The
+# normally with its own files (without the lock both would exit with 0 and
+# the directory hold one run's .vtu next to the other's summary.json). The
 # first run (the square on 6 levels) is stopped with SIGSTOP as soon as it
 # prints its scene, after it locked the directory, and continued after the
 # second run ended, so the test does not depend on timing. The same with
 # the lock file removed while the first run is stopped: the second run
-# finds the first one's staging directory in use (found by probing: it
-# removed it, and the first run failed).
+# finds the first one's staging directory in use and leaves it alone.
+# ctest: timeout=120
 import os
 import re
 import signal

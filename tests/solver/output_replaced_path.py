@@ -3,13 +3,14 @@
 # directory the program may replace. It ends with exit code 1 and one line
 # naming Output/Directory and the directory in which it keeps its results
 # (<name>.results-<pid>, with summary.json), and leaves nothing else
-# (README, "How the output files appear"). (Found by probing: a regular
-# file made at the path during the run was exchanged for the results and
-# left in the hidden staging directory, with exit code 0.) The path
-# changes
+# (README, "How the output files appear"): a regular file made at the
+# path during the run must not be exchanged for the results and left in
+# the hidden staging directory with exit code 0. The path changes
 #  - while the run computes (it is stopped with SIGSTOP after its scene
 #    line): a regular file where there was nothing, a directory of the
-#    user's (not written by the program) where the program's was;
+#    user's (not written by the program) where the program's was, a
+#    directory of the user's inside the program's under the name of an
+#    output file;
 #  - just before the rename that publishes (stopped there by
 #    tests/solver/fault_injection.cc, FOSLS_FAULT_STOP_AT): with
 #    RENAME_EXCHANGE, with the two renames of a filesystem without it, and
@@ -122,6 +123,17 @@ changed_while_computing("the directory replaced by the user's while the run comp
                         lambda: content("written/mine.txt") == "the user's\n"
                         and sorted(os.listdir("written")) == ["mine.txt"]
                         and content("written.moved/summary.json") is not None)
+
+
+# while the run computes: a directory of the user's made in the program's
+# directory under the name of an output file
+rc, out, err = execute(command("taken"))
+check(rc == 0, "a run into 'taken': exit code 0")
+changed_while_computing("a directory named summary.json made while the run computes", "taken",
+                        lambda: (os.remove("taken/summary.json"),
+                                 os.mkdir("taken/summary.json"),
+                                 file_with("taken/summary.json/mine.txt", "the user's\n")),
+                        lambda: content("taken/summary.json/mine.txt") == "the user's\n")
 
 
 # just before the rename that publishes: the directory moved away and a

@@ -5,9 +5,8 @@
 # solution.pvd, contact_000N.csv, adaptive_steps.csv, ...) is killed (by
 # tests/solver/fault_injection.cc) as it begins to write summary.json, so
 # its staging directory holds every other output file and no list of
-# them. (Found by probing: the next run recognized the leftovers by a list
-# of names that lacked most of these, and left the staging directory
-# there.) A copy of it without the staging directory's record (as an older
+# them: the next run recognizes the leftovers by the staging directory's
+# record, not by a list of output names. A copy of it without the staging directory's record (as an older
 # version of the program leaves it) goes too, and so does the old
 # directory that an older version left when killed right after its
 # exchange; the user's subdirectory in that one is brought back into the

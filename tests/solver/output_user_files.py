@@ -1,11 +1,11 @@
 # A run never deletes files it (or an earlier run, by its list
 # .fosls-contact-files) did not write: the user's files put into
 # Output/Directory after a first run (solution_0001.vtu, solution_abc.vtu,
-# solution_0000.2.vtu, notes.txt and a subdirectory; found deleted by
-# probing: every solution_*.vtu was) are
-# carried over into the new directory with their content, while the pieces
+# solution_0000.2.vtu, notes.txt and a subdirectory, named like output
+# files or not) are carried over into the new directory with their content, while the pieces
 # an earlier run wrote and this one does not (solution_0000.1.vtu after a
 # run on 2 processes) are removed, as is the .pvtu when Write vtu = false.
+# ctest: timeout=120 mpirun
 import os
 import re
 import shutil

@@ -21,6 +21,7 @@
 # levels from a zero start (11 cycles) converge (stop_reason "tolerance"
 # or "round-off floor"). A stalled run exits with code 2 (not converged)
 # and one line on stderr that says it stalled.
+# ctest: mpirun
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

@@ -8,6 +8,7 @@
 #    with Grading 3.7 had positive coarse cell areas but an inverted
 #    corner, and the run ended with J = -3.7e-5 (a sum of squares) without
 #    a word.
+# ctest: timeout=120
 import os
 import sys
 

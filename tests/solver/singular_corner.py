@@ -8,12 +8,13 @@
 #   15, measured -0.55);
 # - the estimator: the efficiency index sqrt(J) / error stays in [0.35,
 #   0.45] at every adaptive step (measured 0.381 to 0.403) down to cells
-#   of 2^-17 of the domain at the corner. Two bugs showed here: the round-off
-#   rule of the assembled matrix dropped genuine constitutive couplings of
-#   such cells (their RT fluxes have an equilibrium diagonal C_eq h^-2): J
-#   came out at a third of its cellwise sum and the solution was off; and
-#   the finite-difference divergence of the exact stress (a fixed step of
-#   1e-8 L) made the H(div) error of step 15 1.8 times too large (index 0.24);
+#   of 2^-17 of the domain at the corner. Two errors would show here: a
+#   round-off rule of the assembled matrix that drops genuine constitutive
+#   couplings of such cells (their RT fluxes have an equilibrium diagonal
+#   C_eq h^-2) puts J at a third of its cellwise sum and the solution off;
+#   a finite-difference divergence of the exact stress (a fixed step of
+#   1e-8 L) makes the H(div) error of step 15 1.8 times too large (index
+#   0.24);
 # - J, a quadratic form of the assembled matrix, agrees with the sum of
 #   its cellwise parts eta_T^2 (quadrature of the residuals): to 1e-3 on
 #   the deepest mesh (measured 1e-4), and to 1e-2 with C_eq = 1e6

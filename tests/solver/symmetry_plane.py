@@ -4,13 +4,14 @@
 # contact force are exactly half (a quarter) of the full model's, and the
 # contact vertices on the plane, where the roller meets the contact
 # boundary, are contact vertices (u.n <= g with the roller's u_x = 0).
-# Before per-id components every roller was refused (a global component
-# list leaves a translation free); before the roller contact vertex, the
-# corner was a Dirichlet vertex, unconstrained in u.n.
+# (One component list for all Dirichlet ids would make a roller leave a
+# translation free; taken as a Dirichlet vertex, the corner would be
+# unconstrained in u.n.)
 # A part and the full model have the same functional only with the same
 # reference length (Scaling): the parts are given the full model's 2.
 # Also refused, one line each: a roller meeting the contact boundary where
 # the obstacle normal is not a free axis, and malformed per-id lists.
+# ctest: mpirun
 import csv
 import os
 import sys

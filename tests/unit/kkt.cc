@@ -16,6 +16,7 @@
 // Functional values are printed scaled by 1e7 (they are ~1e-7).
 // Runs on one MPI process, which owns every DoF (the LevelVectors' local
 // indices = global ones).
+// ctest: timeout=120
 #include <deal.II/base/mpi.h>
 
 #include <fosls_contact/assembly/fosls_assembler.h>

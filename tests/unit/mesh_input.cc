@@ -13,6 +13,7 @@
 //    (also for Gmsh's unstructured half disc); without the option the
 //    faces stay flat and the vertices do not.
 // The files are written into the test's directory.
+// ctest: timeout=120
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_out.h>
 #include <deal.II/grid/grid_tools.h>

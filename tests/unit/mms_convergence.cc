@@ -5,6 +5,7 @@
 // summary.json fields error_u_h1, error_sigma_hdiv) must decrease with
 // order 1 (asserted in [0.9, 1.2] for the last two refinements); the L2
 // error of u is reported and must be at least of order 1.8.
+// ctest: timeout=120
 #include <deal.II/base/mpi.h>
 
 #include <fosls_contact/assembly/fosls_assembler.h>

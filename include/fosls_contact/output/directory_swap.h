@@ -67,6 +67,15 @@ namespace FoslsContact
     static std::string foreign_entry(const std::filesystem::path &directory);
 
     /**
+     * The first subdirectory of @p directory under the name of an output
+     * file ("" if none): the run writes a file of that name, and the user's
+     * directory could neither stay in the new directory beside it nor be
+     * removed, so the run is refused before the computation (and its
+     * results are kept aside if one appears during the run).
+     */
+    static std::string directory_under_output_name(const std::filesystem::path &directory);
+
+    /**
      * Whether a run of the program holds the lock file (or record) @p path:
      * another open file has a flock on it.
      */

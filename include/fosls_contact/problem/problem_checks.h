@@ -100,6 +100,13 @@ namespace FoslsContact
      * covers both; the figures are in doc/method.md section 6.
      */
     static constexpr double coarse_level_margin = 0.5;
+    /**
+     * A relative eigenvalue of the contact Schur complement this close to
+     * 0 is round-off (its entries are scaled to a unit diagonal), where
+     * an indefinite C_compl gives eigenvalues of order -1e-3 to -0.1
+     * (tests/solver/functional_weights).
+     */
+    static constexpr double round_off_eigenvalue = 1e-10;
 
   private:
     /**

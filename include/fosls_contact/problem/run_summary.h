@@ -81,14 +81,23 @@ namespace FoslsContact
      */
     void add_memory(Summary &summary, const LevelBytes &transfer_bytes) const;
     /**
-     * Print a note if @p J (of the assembled quadratic form, in the
-     * scene's units) and the sum of its cellwise parts in @p indicators
-     * differ by more than 1e-3 relative: the form's round-off reaches J.
-     * @p J_start: J of the solve's start (a J at its round-off is no news).
+     * The round-off of J against J. A note if @p J (of the assembled
+     * quadratic form, in the scene's units) and the sum of its cellwise
+     * parts in @p indicators differ by more than 1e-3 relative (@p J_start:
+     * J of the solve's start; a J at its round-off is no news). And
+     * `functional_round_off` in @p summary, the last iterate's
+     * IterateMeasures::functional_round_off over J: where it passes
+     * #round_off_warning, the solvers cannot tell the solution from its
+     * neighbours to the digits asked (doc/method.md, "Conditioning"),
+     * which a warning line and `round_off_limited` with its cause
+     * (Conditioning) say.
      */
-    void note_functional_round_off(const double                J,
-                                   const double                J_start,
-                                   const ErrorIndicators<dim> &indicators) const;
+    void add_round_off(Summary &                   summary,
+                       const double                J,
+                       const double                J_start,
+                       const ErrorIndicators<dim> &indicators) const;
+    /** The round-off of J, relative, from which a run is round-off limited. */
+    static constexpr double round_off_warning = 1e-2;
     /**
      * The solution's figures in the scene's units: J and its parts, the
      * contact force, the error indicators, the largest displacement and

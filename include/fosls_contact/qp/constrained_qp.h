@@ -36,6 +36,15 @@ namespace FoslsContact
     FunctionalValue functional;     ///< ConstrainedQP::parts() at the iterate
     double          correction = 0; ///< ConstrainedQP::energy_norm() of the correction
     double          round_off  = 0; ///< ConstrainedQP::round_off_correction() at the iterate
+    /**
+     * The round-off of J at the iterate: machine epsilon times the sum of
+     * the magnitudes of its terms (|x|^T |A| |x| / 2 + |b|^T |x| + |c|).
+     * J is summed accurately, but the matrix's entries carry the round-off
+     * of their assembly, which is of this size in J; where it reaches J
+     * itself (weights or cell sizes many orders apart), a step of the
+     * solver can raise J by round-off alone.
+     */
+    double functional_round_off = 0;
   };
 
   /**

@@ -165,6 +165,14 @@ namespace FoslsContact
     /** The checks of the mesh once read: "" or why it is none. */
     std::string check_mesh() const;
 
+    /**
+     * A hexahedron whose sides bend across a diagonal (its upper face
+     * listed rotated): "" or why the mesh is none. @p sides are the
+     * hexahedron's sides as cyclic lists of its node positions.
+     */
+    std::string check_twist(const std::vector<unsigned int> &             mesh_cells,
+                            const std::vector<std::vector<unsigned int>> &sides) const;
+
     /** The checks by position: coincident nodes, hanging nodes, overlaps. */
     std::string check_geometry(const std::vector<unsigned int> &mesh_cells) const;
     /** The points to test, and where they are (mesh_check.cc). */

@@ -15,6 +15,7 @@ namespace FoslsContact
     unsigned int    active        = 0;
     double          violation     = 0;
     double          round_off     = 0; ///< ConstrainedQP::round_off_correction
+    double          functional_round_off = 0; ///< IterateMeasures::functional_round_off
     double          wall_seconds  = 0;
   };
 } // namespace FoslsContact

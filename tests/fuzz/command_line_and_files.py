@@ -1,8 +1,9 @@
+# ctest: long
 """Fuzz the command line, the scene files and the parameter values of
 fosls-contact.
 
-usage: fuzz.py FOSLS_CONTACT SOURCE_DIR [--cases N] [--mesh-cases M] [--cause-cases K]
-               [--mpi-cases P] [--seed S] [--jobs J]
+usage: command_line_and_files.py FOSLS_CONTACT SOURCE_DIR [--cases N]
+           [--mesh-cases M] [--cause-cases K] [--mpi-cases P] [--seed S] [--jobs J]
 
 Generates N cases (default 600) with a fixed seed (default 1) from the
 scenes in tests/scenes (Geometry/Levels = 2, at most 20 iterations, one
@@ -28,7 +29,8 @@ structured mesh of quadrilaterals or hexahedra (Geometry/Shape = file,
 the whole boundary clamped) written as Gmsh 2.2, Gmsh 4.1, VTK, AVS UCD
 or Abaqus, with one corruption drawn: a node index past the nodes or
 negative, a cell listed twice (same order, rotated, reversed), a cell
-refined alone (hanging nodes), a cell moved by half its size (overlap), a
+listed twisted (a quadrilateral crossed, a hexahedron's upper face turned
+by a quarter, a half or three quarters), a cell refined alone (hanging nodes), a cell moved by half its size (overlap), a
 shared node split in two at one point (a crack), z != 0 in 2D, a
 coordinate that is no finite number or missing, a Gmsh header of another
 version than its body, a truncation at a random byte; or none, or a UTF-8
@@ -43,6 +45,7 @@ their cause, on the square or the cube (or a small mesh file): a data
 expression (Dirichlet values, traction, gap, body force) that is NaN in
 part of the body, or of a size the dimensionless problem overflows on
 (1e120 to 1e300); a push so small that it underflows (1e-300 to 1e-160);
+a box so thin that its cells' aspect ratio is 2e4 to 1e9;
 a Gmsh physical tag that is negative or above 255; an Abaqus surface whose
 name holds no id, a signed one or two numbers; a mesh with a part apart
 from the rest that only a Neumann boundary or the obstacle holds. A cause
@@ -289,7 +292,7 @@ def make_case(rng, number, source, entries):
 
 
 MESH_CORRUPTIONS = ["index past", "index negative", "cell twice", "cell twice rotated",
-                    "cell twice reversed", "hanging nodes", "overlap", "point twice", "off plane",
+                    "cell twice reversed", "cell twisted", "hanging nodes", "overlap", "point twice", "off plane",
                     "coordinate", "version", "truncation", "none", "bom crlf"]
 # corruptions a run may take (a truncation can leave a mesh whole); the others must be refused
 MESH_VALID = ["none", "bom crlf"]
@@ -335,6 +338,13 @@ def corrupt_mesh(rng, dim, points, cells, h, corruption):
         elif corruption.endswith("reversed"):
             cell = cell[4:] + cell[:4] if dim == 3 else cell[::-1]
         cells.insert(rng.randrange(len(cells) + 1), cell)
+    elif corruption == "cell twisted":
+        cell = cells[c]
+        if dim == 2:
+            cell[2], cell[3] = cell[3], cell[2]
+        else:
+            r = rng.randint(1, 3)
+            cell[4:] = cell[4 + r:] + cell[4:4 + r]
     elif corruption == "hanging nodes":
         # cell c in 2^dim children, its neighbours whole
         low = points[cells[c][0]]
@@ -464,7 +474,8 @@ def make_mesh_case(rng, source):
     return arguments, files, "mesh " + corruption
 
 
-CAUSES = ["data nan", "data huge", "data tiny", "gmsh tag", "abaqus surface", "floating part"]
+CAUSES = ["data nan", "data huge", "data tiny", "thin cells", "gmsh tag", "abaqus surface",
+          "floating part"]
 DATA = {"Dirichlet values": "Data/Dirichlet values", "Traction": "Data/Traction",
         "Gap": "Data/Gap", "Body force": "Data/Body force"}
 
@@ -499,6 +510,11 @@ def make_cause_case(rng, source):
     arguments = ["scene.prm", "--set", "Geometry/Levels=2", "--set", "Solver/Max iterations=20",
                  "--set", "Solver/Threads=1", "--set", "Output/Directory=out",
                  "--set", "Output/Verbose=false"]
+    if cause == "thin cells":
+        thickness = rng.choice(["5e-5", "2e-5", "1e-6", "1e-9"])
+        arguments += ["--set", "Geometry/Box upper corner=" + ", ".join(["1"] * (dim - 1)
+                                                                         + [thickness])]
+        return arguments, files, "cause aspect ratio"
     if cause.startswith("data"):
         name = rng.choice(list(DATA)) if cause != "data tiny" else "Dirichlet values"
         n = 1 if name == "Gap" else dim

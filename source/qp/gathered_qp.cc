@@ -48,7 +48,10 @@ namespace FoslsContact
         for (std::size_t r = 0; r < counts.size(); ++r)
           {
             parts[r].resize(counts[r] / sizeof(T));
-            std::memcpy(parts[r].data(), all.data() + offsets[r], counts[r]);
+            // (an empty part's data() may be null, which memcpy must not
+            // be given even for 0 bytes: undefined behaviour)
+            if (counts[r] > 0)
+              std::memcpy(parts[r].data(), all.data() + offsets[r], counts[r]);
           }
       });
       return parts;

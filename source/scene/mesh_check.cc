@@ -1148,8 +1148,8 @@ namespace FoslsContact
     // across either diagonal: a quarter turn bends a side of a box cell by
     // 90 degrees (a long thin box) to 172 (a flat one), half a turn or a
     // reversed face by 180. A side of a sound mesh is flat, or curved with
-    // the surface it approximates by less: a coarse mesh of a ball in 12
-    // cells (prm/meshes/quarter_ball.msh) bends a side by 64 degrees.
+    // the surface it approximates by less, even as coarse a mesh of a ball
+    // as the 12 cells of prm/meshes/quarter_ball.msh.
     constexpr double limit_degrees = 85;
     const auto       minus         = [](const Point3 &a, const Point3 &b) {
       return Point3{{a[0] - b[0], a[1] - b[1], a[2] - b[2]}};

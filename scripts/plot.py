@@ -16,6 +16,11 @@ and summary.json). Writes, into OUT_DIR (default RUN_DIR):
                         marked.
   convergence.png       J and the energy norm of the correction per
                         iteration (convergence.csv).
+  load_path.png         runs along a load path (Data/Load steps,
+                        summary.json "load_steps"): the normal contact
+                        force against the constant the path changes (the
+                        first, by name, if it changes several), the steps
+                        joined in their order, so that unloading shows.
 
 Exit code 0, or 1 with one line on stderr if the run directory is missing
 or incomplete.
@@ -150,6 +155,30 @@ def plot_convergence(plt, summary, history, out):
     plt.close(fig)
 
 
+def plot_load_path(plt, summary, out):
+    """load_path.png, for a run along a load path; the file name, or None."""
+    steps = summary.get("load_steps") or []
+    if not steps or not steps[0]["constants"]:
+        return None
+    name = sorted(steps[0]["constants"])[0]
+    load = [s["constants"][name] for s in steps]
+    force = [s["normal_force"] for s in steps]
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    ax.plot(load, force, "o-")
+    for s, x, y in zip(steps, load, force):
+        ax.annotate(str(s["step"]), (x, y), textcoords="offset points", xytext=(4, -10),
+                    fontsize=7)
+    ax.set_xlabel(name + " (Data/Constants)")
+    ax.set_ylabel("normal contact force" + unit_label(summary, "force"))
+    ax.set_title("load path: %d steps (numbered)" % len(steps), fontsize=9)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    path = os.path.join(out, "load_path.png")
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
 def main():
     parser = argparse.ArgumentParser(description="Plot a fosls-contact run.")
     parser.add_argument("run_dir", help="the run's Output/Directory")
@@ -174,8 +203,11 @@ def main():
         fail("matplotlib is missing (scripts/setup.sh installs python3-matplotlib)")
     plot_pressure(plt, summary, contact, out)
     plot_convergence(plt, summary, history, out)
-    print("wrote %s and %s" % (os.path.join(out, "contact_pressure.png"),
-                               os.path.join(out, "convergence.png")))
+    written = [os.path.join(out, "contact_pressure.png"), os.path.join(out, "convergence.png")]
+    load_path = plot_load_path(plt, summary, out)
+    if load_path:
+        written.append(load_path)
+    print("wrote %s" % ", ".join(written))
 
 
 if __name__ == "__main__":

@@ -120,6 +120,23 @@ namespace FoslsContact
 
 
   template <int dim>
+  void
+  Discretization<dim>::update_data()
+  {
+    // (a level's data is filled from empty: setup_level() appends the
+    // contact vertices, faces and rotations)
+    for (unsigned int l = 0; l < levels.size(); ++l)
+      {
+        LevelData<dim> fresh;
+        fresh.level       = levels[l].level;
+        fresh.active_mesh = levels[l].active_mesh;
+        levels[l]         = std::move(fresh);
+        setup_level(l);
+      }
+  }
+
+
+  template <int dim>
   bool
   Discretization<dim>::refine(const Vector<float> &              criteria,
                               const Parameters::Adaptivity &     adaptivity,

@@ -387,7 +387,8 @@ namespace FoslsContact
     // the last one's): the pressure on each mesh, for comparisons
     // (and returns every step's table, which an interrupted run publishes
     // as contact.csv of its last finished step, FoslsProblem::run())
-    const bool adaptive = parameters.adaptivity.enabled();
+    // (so does a load path, every load step's)
+    const bool adaptive = parameters.adaptivity.enabled() || !parameters.data.load_steps.empty();
     const bool table    = adaptive && discretization.get_scene().has_contact();
     if (!parameters.output.write_vtu && !adaptive)
       return "";

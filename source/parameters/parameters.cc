@@ -71,6 +71,13 @@ namespace FoslsContact
                              "multigrid or active set: projected gauss seidel sweeps the "
                              "uniformly refined levels only"));
 
+      // (an adaptive run refines between its solves, a load path steps
+      // its data on one mesh; both at once would make each step's mesh
+      // depend on the load path)
+      AssertThrow(!adaptivity.enabled() || data.load_steps.empty(),
+                  ExcMessage("parameter 'Data/Load steps' needs 'Adaptivity/Steps' = 0: the "
+                             "steps of a load path are solved on one mesh"));
+
       boundary_conditions.parse_components(geometry.dimension);
     }
   } // namespace Parameters

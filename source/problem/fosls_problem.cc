@@ -4,8 +4,10 @@
 
 #include <fosls_contact/assembly/error_indicators.h>
 #include <fosls_contact/assembly/fosls_assembler.h>
+#include <fosls_contact/base/collective_error.h>
 #include <fosls_contact/base/interruption.h>
 #include <fosls_contact/base/json.h>
+#include <fosls_contact/output/contact_zone.h>
 #include <fosls_contact/output/postprocessor.h>
 #include <fosls_contact/problem/fosls_problem.h>
 #include <fosls_contact/problem/initial_guess.h>
@@ -373,6 +375,8 @@ namespace FoslsContact
     row.relative_error_estimate =
       run_summary.add_error_estimate(summary, post, cartesian, *indicators);
     run_summary.add_forces(summary, forces, force);
+    if (load_path())
+      add_load_step(forces, force, J);
     row.reference = reference_solved;
     if (parameters.adaptivity.reference_refinements > 0)
       {
@@ -407,8 +411,64 @@ namespace FoslsContact
       }
     if (!singular_stress.empty())
       summary["singular_stress"] = "\"" + singular_stress + "\"";
-    if (parameters.adaptivity.enabled())
+    if (parameters.adaptivity.enabled() || load_path())
       finished = FinishedStep{table, monitor->csv(), summary};
+  }
+
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::add_load_step(const std::map<types::boundary_id, Tensor<1, dim>> &forces,
+                                   const Tensor<1, dim> &                              force,
+                                   const FunctionalValue &                             J)
+  {
+    typename LoadSteps<dim>::Step row;
+    for (const auto &changes : parameters.data.load_steps)
+      for (const auto &change : changes)
+        row.constants[change.first] = scene.constant(change.first);
+    row.iterations = monitor->iterations();
+    row.cycles     = monitor->cycles();
+    row.converged  = monitor->converged();
+    row.functional = J.total;
+    row.force      = force;
+    for (const auto &[id, f] : forces)
+      if (scene.is_dirichlet(id))
+        row.reactions[id] = f;
+    if (scene.has_contact())
+      {
+        // (gathered on the first process, which writes the table)
+        const auto             rows = ContactTable<dim>(*discretization).rows(solution);
+        const ContactZone<dim> zone(rows);
+        row.contact_measure     = zone.measure();
+        row.peak_pressure       = zone.peak_pressure();
+        row.vertices_in_contact = zone.vertices_in_contact();
+        const double L          = scene.scaling().length;
+        LoadSteps<dim>::split_force(row, rows, [&](const Point<dim> &x) {
+          return scene.obstacle_normal(x / L);
+        });
+      }
+    load_steps.add(row);
+  }
+
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::next_load_step()
+  {
+    TimerOutput::Scope t(timer, "Load step");
+    Timer              wall;
+    const unsigned int L = discretization->finest_level();
+    // (in Cartesian coordinates: the rotations follow the obstacle normal,
+    // which may change with the step's constants)
+    carried = solution;
+    discretization->rotate_to_cartesian(L, carried);
+    scene.set_load_step(parameters, step + 1);
+    CollectiveError::run(discretization->get_communicator(),
+                         [&]() { discretization->update_data(); });
+    // (the solver's hierarchy holds the levels' rotations and bounds)
+    solver.reset();
+    transfer = std::make_unique<LevelTransfer<dim>>(*discretization);
+    time_setup += wall.wall_time();
   }
 
 
@@ -511,8 +571,10 @@ namespace FoslsContact
     discretization->rotate_to_normal_tangential(L, solution);
     // the new boundary vertices of a refined mesh take the Dirichlet data
     // and the contact bounds there, which the interpolant need not meet
-    pcout << "Initial guess: the solution on the previous mesh, interpolated; it violates "
-             "the constraints (Dirichlet values, contact bounds) by "
+    pcout << (load_path() ? "Initial guess: the previous load step's solution; it violates " :
+                            "Initial guess: the solution on the previous mesh, interpolated; it "
+                            "violates ")
+          << "the constraints (Dirichlet values, contact bounds) by "
           << std::scientific << std::setprecision(3)
           << qp.max_violation(solution) * scene.scaling().length << std::defaultfloat
           << " (projected onto them)" << std::endl;
@@ -533,6 +595,11 @@ namespace FoslsContact
         summary["adaptive_stop"]  = "\"" + adaptive_stop + "\"";
         extra_files["adaptive_steps.csv"] = steps.csv();
       }
+    if (load_path())
+      {
+        summary["load_steps"]         = load_steps.json();
+        extra_files["load_steps.csv"] = load_steps.csv();
+      }
     Postprocessor<dim>(*discretization, parameters)
       .write(solution, *monitor, summary, used_parameters, extra_files, output);
     pcout << "Output written to " << parameters.output.directory << "/" << std::endl;
@@ -548,22 +615,35 @@ namespace FoslsContact
     if (!finished)
       throw InterruptedRun("interrupted by " + signal +
                            " before the first solve finished: no output written");
-    pcout << "Interrupted by " << signal << ": publishing the " << steps.size()
-          << " finished adaptive step(s)" << std::endl;
-    summary                   = finished->summary;
-    adaptive_stop             = "interrupted by " + signal;
-    summary["interrupted"]    = "\"" + signal + "\"";
-    summary["adaptive_steps"] = steps.json();
-    summary["adaptive_stop"]  = "\"" + adaptive_stop + "\"";
+    const std::string kind = load_path() ? "load" : "adaptive";
+    pcout << "Interrupted by " << signal << ": publishing the " << steps.size() << " finished "
+          << kind << " step(s)" << std::endl;
+    summary                = finished->summary;
+    summary["interrupted"] = "\"" + signal + "\"";
+    std::map<std::string, std::string> tables;
+    if (load_path())
+      {
+        summary["load_steps"]    = load_steps.json();
+        tables["load_steps.csv"] = load_steps.csv();
+      }
+    else
+      {
+        adaptive_stop                = "interrupted by " + signal;
+        summary["adaptive_steps"]    = steps.json();
+        summary["adaptive_stop"]     = "\"" + adaptive_stop + "\"";
+        tables["adaptive_steps.csv"] = steps.csv();
+      }
     Postprocessor<dim>(*discretization, parameters)
       .write(finished->contact_table,
              finished->convergence,
              summary,
              used_parameters,
-             {{"adaptive_steps.csv", steps.csv()}},
+             tables,
              output);
-    throw InterruptedRun("interrupted by " + signal + " in adaptive step " +
-                         std::to_string(steps.size()) + ": the " +
+    // (the screen counts load steps from 1, adaptive steps from 0, the
+    // first mesh)
+    throw InterruptedRun("interrupted by " + signal + " in " + kind + " step " +
+                         std::to_string(steps.size() + (load_path() ? 1 : 0)) + ": the " +
                          std::to_string(steps.size()) + " finished step(s) are written to " +
                          parameters.output.directory + "/, summary.json has \"interrupted\"");
   }
@@ -618,23 +698,38 @@ namespace FoslsContact
     for (step = 0;; ++step)
       {
         Timer step_wall;
+        if (load_path())
+          {
+            pcout << "Load step " << step + 1 << " of " << parameters.data.n_load_steps() << ":";
+            for (const auto &[name, value] : parameters.data.step_overrides(step))
+              pcout << ' ' << name << " = " << value;
+            pcout << std::endl;
+          }
         phase("Assembly", [&] { assemble(); });
         phase("Checks: data, rigid motions, definiteness", [&] { check_problem(); });
         phase("Initial guess", [&] { step == 0 ? make_initial_guess() : start_from_carried(); });
         phase("Setup: solver", [&] { setup_solver(); });
         phase("Solve", [&] { solve(); });
         // (the files of the whole run with the last step's)
-        bool further = false;
+        bool further = false, next_load = false;
         phase("Output", [&] {
           output_step(output);
           steps.set_step_time(step_wall.wall_time());
           further = !reference_solved && steps.go_on(parameters.adaptivity, adaptive_stop);
-          if (!further && !reference_pending())
+          // (a load step that did not converge ends the path: the next
+          // would start from an unconverged state)
+          next_load = step + 1 < parameters.data.n_load_steps() && monitor->converged();
+          if (!further && !reference_pending() && !next_load)
             {
               finish(output);
               published = true;
             }
         });
+        if (next_load)
+          {
+            phase("Load step", [&] { next_load_step(); });
+            continue;
+          }
         if (!further && !reference_pending())
           break;
         bool refined = false;

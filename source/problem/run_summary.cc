@@ -22,17 +22,6 @@ namespace FoslsContact
   {
     const auto number = json_number;
 
-    /** A vector as a JSON array. */
-    template <int dim>
-    std::string
-    json_vector(const Tensor<1, dim> &v)
-    {
-      std::vector<std::string> items;
-      for (unsigned int d = 0; d < dim; ++d)
-        items.push_back(number(v[d]));
-      return json_array(items);
-    }
-
     /**
      * A force for the screen: 8 significant digits, components below 1e-12
      * of @p scale (the largest force) as 0 (round-off: the screen's

@@ -43,7 +43,19 @@ namespace FoslsContact
     dirichlet_ids.insert(bc.dirichlet_ids.begin(), bc.dirichlet_ids.end());
     neumann_ids.insert(bc.neumann_ids.begin(), bc.neumann_ids.end());
     contact_ids.insert(bc.contact_ids.begin(), bc.contact_ids.end());
+    // (the first step of a load path, or the scene's one step)
+    set_load_step(prm, 0);
+  }
+
+
+  template <int dim>
+  void
+  Scene<dim>::set_load_step(const Parameters::AllParameters &prm, const unsigned int step)
+  {
+    constants.clear();
     read_constants(prm.data.constants);
+    for (const auto &[name, value] : prm.data.step_overrides(step))
+      constants[name] = value;
     make_data_functions(prm);
   }
 

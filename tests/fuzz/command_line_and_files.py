@@ -182,6 +182,8 @@ def valid_value_for(rng, name, pattern, dim):
         return rng.choice(["0", "1", "1e10", "inf", "1e300"])
     if name == "Constants":
         return rng.choice(["a=1", "a=1,b=2", "k=1e10", "k=0", ""])
+    if name == "Load steps":
+        return rng.choice(["", "a=2", "a=1; a=2", "a=1, b=0; b=3", "k=1e10; k=0"])
     if name.endswith("ids") or name == "Dirichlet components":
         return rng.choice(["", "0", "1", "2", "0, 1", "0, 1, 2, 3", "7", "all", "0: 0"])
     if name.startswith("Directory"):

@@ -1,6 +1,8 @@
 #ifndef fosls_contact_base_json_h
 #define fosls_contact_base_json_h
 
+#include <deal.II/base/tensor.h>
+
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -31,6 +33,17 @@ namespace FoslsContact
     for (unsigned int i = 0; i < items.size(); ++i)
       text += (i ? ", " : "") + items[i];
     return text + "]";
+  }
+
+  /** A vector (a force, a position) as a JSON array of its components. */
+  template <int dim>
+  std::string
+  json_vector(const dealii::Tensor<1, dim> &v)
+  {
+    std::vector<std::string> items;
+    for (unsigned int d = 0; d < dim; ++d)
+      items.push_back(json_number(v[d]));
+    return json_array(items);
   }
 } // namespace FoslsContact
 

@@ -140,6 +140,16 @@ namespace FoslsContact
      */
     void refine_as(const Triangulation<dim> &fine, const unsigned int mesh_level);
 
+    /**
+     * Set every level's data up again from the scene's data functions as
+     * they are now (a load step, Scene::set_load_step()): the fixed
+     * values, bounds and rotations of the boundary. The mesh and the DoF
+     * numbering stay, so that a vector of the finest level keeps its
+     * meaning; the rotations may change with the obstacle normal, so a
+     * vector in the rotated basis is rotated back before and anew after.
+     */
+    void update_data();
+
     const LevelData<dim> &level(const unsigned int l) const { return levels[l]; }
 
     /** h_max / h_min of the coarse mesh. */

@@ -11,6 +11,7 @@
 #include <fosls_contact/output/postprocessor.h>
 #include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/problem/adaptive_steps.h>
+#include <fosls_contact/problem/load_steps.h>
 #include <fosls_contact/problem/run_summary.h>
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/scene/scene.h>
@@ -130,6 +131,18 @@ namespace FoslsContact
      * projects it onto the contact constraints).
      */
     void start_from_carried();
+    /** Whether the run follows a load path (Data/Load steps). */
+    bool load_path() const { return !parameters.data.load_steps.empty(); }
+    /**
+     * The next step of the load path: the scene's data with that step's
+     * constants, the levels' bounds and fixed values set up again on the
+     * same mesh, and this step's solution (Cartesian) carried as its start.
+     */
+    void next_load_step();
+    /** The row of this step of the load path (load_steps), and its line. */
+    void add_load_step(const std::map<types::boundary_id, Tensor<1, dim>> &forces,
+                       const Tensor<1, dim> &                              force,
+                       const FunctionalValue &                             J);
     /** The files of the whole run, published with the steps' VTU files. */
     void finish(OutputDirectory &output);
     /**
@@ -162,6 +175,8 @@ namespace FoslsContact
     /** summary.json's fields, of the last step */
     std::map<std::string, std::string>   summary;
     AdaptiveSteps                        steps;
+    /** The rows of a load path (Data/Load steps), one per step. */
+    LoadSteps<dim>                       load_steps;
     /** The step of the adaptive loop (0: the first, uniform mesh). */
     unsigned int                         step = 0;
     /** The last solution, Cartesian, carried over to the refined mesh. */

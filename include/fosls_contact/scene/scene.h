@@ -46,6 +46,19 @@ namespace FoslsContact
      */
     void make_coarse_mesh(Triangulation<dim> &triangulation) const;
 
+    /**
+     * Take the constants of load step @p step (Data/Load steps,
+     * Parameters::Data::step_overrides()) and parse the data expressions
+     * with them anew: the data functions are those of that step, and a
+     * Discretization built on the scene takes them with
+     * Discretization::update_data(). Step 0 of a run without load steps
+     * is the scene as constructed.
+     */
+    void set_load_step(const Parameters::AllParameters &parameters, const unsigned int step);
+
+    /** The value of the constant @p name (Data/Constants) at the current step. */
+    double constant(const std::string &name) const { return constants.at(name); }
+
     /** The reference length and stress of this scene. */
     const Scaling &scaling() const { return reference; }
     /**

@@ -201,6 +201,40 @@ namespace FoslsContact
     TimerOutput::Scope t(timer, "Initial guess");
     InitialGuess<dim>(parameters, scene, *discretization, *transfer, pcout)
       .compute(qp, solution);
+    if (load_path())
+      {
+        load_step_guess = solution;
+        discretization->rotate_to_cartesian(discretization->finest_level(), load_step_guess);
+      }
+  }
+
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::start_load_step()
+  {
+    TimerOutput::Scope t(timer, "Initial guess");
+    const unsigned int L = discretization->finest_level();
+    LevelVector        guess;
+    // (quietly: the guess's own violation is not the start's)
+    const ConditionalOStream quiet(std::cout, false);
+    InitialGuess<dim>(parameters, scene, *discretization, *transfer, quiet).compute(qp, guess);
+    discretization->rotate_to_cartesian(L, guess);
+    solution.reinit(qp.partitioner);
+    solution.copy_locally_owned_data_from(carried);
+    LevelVector change(qp.partitioner), previous(qp.partitioner);
+    change.copy_locally_owned_data_from(guess);
+    previous.copy_locally_owned_data_from(load_step_guess);
+    change -= previous;
+    solution += change;
+    update_ghosts(solution);
+    discretization->rotate_to_normal_tangential(L, solution);
+    load_step_guess = guess;
+    pcout << "Initial guess: the previous load step's solution plus the change of the initial "
+             "guess; it violates the constraints (Dirichlet values, contact bounds) by "
+          << std::scientific << std::setprecision(3)
+          << qp.max_violation(solution) * scene.scaling().length << std::defaultfloat
+          << " (projected onto them)" << std::endl;
   }
 
 
@@ -571,10 +605,8 @@ namespace FoslsContact
     discretization->rotate_to_normal_tangential(L, solution);
     // the new boundary vertices of a refined mesh take the Dirichlet data
     // and the contact bounds there, which the interpolant need not meet
-    pcout << (load_path() ? "Initial guess: the previous load step's solution; it violates " :
-                            "Initial guess: the solution on the previous mesh, interpolated; it "
-                            "violates ")
-          << "the constraints (Dirichlet values, contact bounds) by "
+    pcout << "Initial guess: the solution on the previous mesh, interpolated; it violates "
+             "the constraints (Dirichlet values, contact bounds) by "
           << std::scientific << std::setprecision(3)
           << qp.max_violation(solution) * scene.scaling().length << std::defaultfloat
           << " (projected onto them)" << std::endl;
@@ -707,7 +739,9 @@ namespace FoslsContact
           }
         phase("Assembly", [&] { assemble(); });
         phase("Checks: data, rigid motions, definiteness", [&] { check_problem(); });
-        phase("Initial guess", [&] { step == 0 ? make_initial_guess() : start_from_carried(); });
+        phase("Initial guess", [&] {
+          step == 0 ? make_initial_guess() : load_path() ? start_load_step() : start_from_carried();
+        });
         phase("Setup: solver", [&] { setup_solver(); });
         phase("Solve", [&] { solve(); });
         // (the files of the whole run with the last step's)

@@ -131,6 +131,16 @@ namespace FoslsContact
      * projects it onto the contact constraints).
      */
     void start_from_carried();
+    /**
+     * The start of a load step after the first: the previous step's
+     * solution (carried) plus the change of Solver/Initial guess between
+     * the two steps' data (Cartesian), in the rotated basis. The change
+     * carries the new Dirichlet values and the coarse shape of the new
+     * solution into the start, where the previous solution alone would
+     * meet them only at the boundary (a layer of one cell the solver has
+     * to smooth out); with Initial guess = zero it is the previous solution.
+     */
+    void start_load_step();
     /** Whether the run follows a load path (Data/Load steps). */
     bool load_path() const { return !parameters.data.load_steps.empty(); }
     /**
@@ -175,6 +185,11 @@ namespace FoslsContact
     /** summary.json's fields, of the last step */
     std::map<std::string, std::string>   summary;
     AdaptiveSteps                        steps;
+    /**
+     * A load path: the initial guess (Solver/Initial guess) of the last
+     * step's data, Cartesian, for start_load_step().
+     */
+    LevelVector                          load_step_guess;
     /** The rows of a load path (Data/Load steps), one per step. */
     LoadSteps<dim>                       load_steps;
     /** The step of the adaptive loop (0: the first, uniform mesh). */

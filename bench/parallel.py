@@ -54,7 +54,7 @@ def run(scene, settings, processes, threads, out, binary=None):
                       out, binary, processes, threads)
 
 
-def fastest(variants, levels, runs, scene, settings, processes, threads, tag):
+def fastest(variants, levels, runs, scene, settings, processes, threads, tag, every=None):
     """The time per cycle per DoF (solve time / cycles / DoFs of summary.json,
     the measure of doc/results.md f) of every variant on every level of
     prm/`scene`: the fastest of `runs` runs. `variants` maps a name to
@@ -63,7 +63,8 @@ def fastest(variants, levels, runs, scene, settings, processes, threads, tag):
     first in turn, so that all of them see the same spells of the machine
     (single runs of one binary scatter by 10-65% here, doc/performance.md
     section 1). Returns {(name, level): (us per cycle per DoF, summary of
-    that run)}; prints every run."""
+    that run)}; prints every run, and appends it to every[(name, level)]
+    if `every` is a dict."""
     names = list(variants)
     best = {}
     for k in range(runs):
@@ -75,6 +76,8 @@ def fastest(variants, levels, runs, scene, settings, processes, threads, tag):
                 s = run(scene, dict(settings, **own, **{"Geometry/Levels": str(level)}),
                         processes, threads, out, binary=binary)
                 per_dof = s["time_solve_s"] / max(s["cycles"], 1) / s["dofs"] * 1e6
+                if every is not None:
+                    every.setdefault((name, level), []).append((per_dof, s))
                 if (name, level) not in best or per_dof < best[(name, level)][0]:
                     best[(name, level)] = (per_dof, s)
                 print(f"run {k + 1}/{runs} level {level} {label(processes, threads)} {name}: "

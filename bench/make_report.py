@@ -10,7 +10,6 @@ import math
 import os
 import re
 import string
-import time
 
 import matplotlib
 matplotlib.use("Agg")
@@ -135,10 +134,7 @@ def timing_runs():
 
 
 def head():
-    # (the date of the runs, runs.csv's last change, not of this report)
-    runs_date = os.path.getmtime(os.path.join(RES, "runs.csv"))
-    return [fill("head", date=time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime(runs_date)),
-                 timing_runs=timing_runs())]
+    return [fill("head", timing_runs=timing_runs())]
 
 
 def solutions():

@@ -1,7 +1,7 @@
 """What the bench scripts share: the repository's paths, the program and how
-to start it.
+to start it, and the templates of the reports they write.
 
-    from common import ROOT, BIN, run
+    from common import ROOT, BIN, run, load_template
 
 A scene is named by its file in prm/; settings are "Subsection/Name=value"
 strings or a dict {"Subsection/Name": value}, each given to the program as
@@ -9,7 +9,9 @@ one --set, in their order.
 """
 import json
 import os
+import re
 import shutil
+import string
 import subprocess
 import sys
 import time
@@ -65,3 +67,17 @@ def run(scene, settings, out, binary=None, processes=1, threads=None):
         summary = json.load(f)
     summary["wall_s"] = wall
     return summary
+
+
+def load_template(path):
+    """The blocks of the report template @p path: {name: string.Template}. A
+    block is the text between its line `@@ name` and the next such line,
+    without the last line end (so a block that ends a paragraph ends with an
+    empty line, and a block meant to be put inside a sentence runs up to
+    the next `@@` line)."""
+    blocks = {}
+    with open(path) as f:
+        parts = re.split(r"^@@ (\w+)\n", f.read(), flags=re.M)
+    for name, text in zip(parts[1::2], parts[2::2]):
+        blocks[name] = string.Template(text[:-1] if text.endswith("\n") else text)
+    return blocks

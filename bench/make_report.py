@@ -9,14 +9,12 @@ import json
 import math
 import os
 import re
-import string
-import time
 
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from common import RESULTS as RES, ROOT  # noqa: E402
+from common import RESULTS as RES, ROOT, load_template  # noqa: E402
 
 FIG = os.path.join(ROOT, "doc", "figures")
 OUT = os.path.join(ROOT, "doc", "results.md")
@@ -32,18 +30,6 @@ LAMBDAS = ["1", "inf"]
 SQUARE_SOLVERS = [("plainV", "plain V(3,3)"), ("plainW", "plain W(3,3)"),
                   ("default", "default (Krylov 50, W(3,3))")]
 DISC_SOLVER = {"plain": "plain", "plainzero": "plain, zero start", "default": "default"}
-
-
-def load_template(path):
-    """The blocks of the template: {name: string.Template}. A block is the
-    text between its line `@@ name` and the next such line, without the
-    last line end."""
-    blocks = {}
-    with open(path) as f:
-        parts = re.split(r"^@@ (\w+)\n", f.read(), flags=re.M)
-    for name, text in zip(parts[1::2], parts[2::2]):
-        blocks[name] = string.Template(text[:-1] if text.endswith("\n") else text)
-    return blocks
 
 
 BLOCKS = load_template(TEMPLATE)
@@ -135,10 +121,7 @@ def timing_runs():
 
 
 def head():
-    # (the date of the runs, runs.csv's last change, not of this report)
-    runs_date = os.path.getmtime(os.path.join(RES, "runs.csv"))
-    return [fill("head", date=time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime(runs_date)),
-                 timing_runs=timing_runs())]
+    return [fill("head", timing_runs=timing_runs())]
 
 
 def solutions():

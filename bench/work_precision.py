@@ -332,7 +332,6 @@ def main():
             "status": "meta", "wall_s": round(startup, 3),
             "note": f"cpus={os.cpu_count()}; mem_gb={mem:.1f}; "
                     f"cpu={platform.processor() or platform.machine()}; git={git}; "
-                    f"started={time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime(T0))}; "
                     f"budget_s={ARGS.budget:.0f}; case_cap_s={CASE_CAP_S:.0f}; "
                     f"pgs_sweeps={PGS_SWEEPS}"}
     rows.append(meta)

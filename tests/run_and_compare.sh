@@ -23,7 +23,7 @@
 #       empty afterwards. TEST holds comment lines (#), one line
 #       `error: REGEX` and one or more lines `run: COMMAND...` (joined
 #       into one bash command). The command runs with the variables of
-#       tests/bad_input/common.sh, $src (the repository), $tests, $bad
+#       tests/bad_input/shared_scenes.sh, $src (the repository), $tests, $bad
 #       (tests/bad_input), $mpirun, $fosls_binary (FOSLS_CONTACT) and the
 #       function `fosls`, which runs FOSLS_CONTACT with its arguments, on
 #       PROCESSES MPI processes if PROCESSES > 1 (mpirun --quiet: without
@@ -114,8 +114,8 @@ case "$mode" in
         "$fosls_binary" "$@"
       fi
     }
-    # shellcheck source=bad_input/common.sh
-    . "$bad/common.sh"
+    # shellcheck source=bad_input/shared_scenes.sh
+    . "$bad/shared_scenes.sh"
     rm -rf "$workdir" && mkdir -p "$workdir/run" && cd "$workdir/run" || fail "cannot create $workdir"
     eval "$command" > ../stdout 2> ../stderr
     rc=$?

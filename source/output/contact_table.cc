@@ -30,7 +30,7 @@ namespace FoslsContact
   ContactTable<dim>::local_rows(const LevelVector &x) const
   {
     using Row           = ContactRow<dim>;
-    const Scaling &scaling = discretization.get_scene().scaling();
+    const ReferenceScales &scaling = discretization.get_scene().scaling();
     const auto &level = discretization.level(discretization.finest_level());
     update_ghosts(x);
     // the displacement in Cartesian coordinates, at the vertices

@@ -152,15 +152,6 @@ namespace FoslsContact
                         "preconditioned by the linear truncated cycle on the "
                         "current inactive set, a projected line search that "
                         "never increases J, and projected post-smoothing.");
-      prm.declare_entry("Linear cycle",
-                        "own",
-                        Patterns::Selection("own|deal.II"),
-                        "The linear truncated cycle that preconditions the Newton "
-                        "step's CG (Krylov steps > 0): own (MonotoneCycle) or "
-                        "deal.II (the same cycle run by deal.II's Multigrid with "
-                        "the patch smoother, the truncated sign-correct transfer, "
-                        "the Galerkin operators and the exact coarse solve as its "
-                        "parts). The iterates are the same up to round-off.");
       prm.declare_entry("Patch rows",
                         "copied",
                         Patterns::Selection("copied|matrix"),
@@ -214,7 +205,6 @@ namespace FoslsContact
                                                  InitialGuess::expression);
       definiteness_max_dofs = prm.get_integer("Definiteness check max dofs");
       krylov_steps          = prm.get_integer("Krylov steps");
-      linear_cycle = prm.get("Linear cycle") == "own" ? LinearCycle::own : LinearCycle::dealii;
       patch_rows   = prm.get("Patch rows") == "copied" ? PatchRows::copied : PatchRows::matrix;
       threads               = prm.get_integer("Threads");
       check_coarse_defects  = prm.get_bool("Check coarse defects");

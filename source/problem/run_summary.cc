@@ -5,7 +5,7 @@
 #include <fosls_contact/base/json.h>
 #include <fosls_contact/output/contact_table.h>
 #include <fosls_contact/output/contact_zone.h>
-#include <fosls_contact/output/hertz_comparison.h>
+#include <fosls_contact/output/hertz_pressure.h>
 #include <fosls_contact/problem/conditioning.h>
 #include <fosls_contact/problem/run_summary.h>
 #include <fosls_contact/problem/solver_choice.h>
@@ -246,7 +246,7 @@ namespace FoslsContact
                                   const ErrorIndicators<dim> &indicators,
                                   const FieldMaxima &         maxima) const
   {
-    // J in the scene's units (Scaling::functional())
+    // J in the scene's units (ReferenceScales::functional())
     const FunctionalValue J_hat  = qp.parts(solution);
     const double          J_unit = scene.scaling().functional(dim);
     FunctionalValue       J      = J_hat;
@@ -486,7 +486,7 @@ namespace FoslsContact
     Point<dim> contact_point;
     for (unsigned int d = 0; d < dim; ++d)
       contact_point[d] = parameters.hertz.contact_point[d] / scene.scaling().length;
-    HertzComparison<dim> hertz(parameters.hertz,
+    HertzPressure<dim> hertz(parameters.hertz,
                                parameters.material,
                                scene.obstacle_normal(contact_point));
     hertz.evaluate(force, rows);

@@ -200,18 +200,6 @@ namespace FoslsContact
 
 
   template <int dim>
-  void
-  LevelOperators<dim>::restrict_and_add(const unsigned int l,
-                                        LevelVector &      dst,
-                                        const LevelVector &src,
-                                        LevelVector &      restricted) const
-  {
-    product[l].Tvmult(restricted, src);
-    dst += restricted;
-  }
-
-
-  template <int dim>
   double
   LevelOperators<dim>::coarse_defect_difference(const unsigned int          l,
                                                 const SparseMatrix<double> &A,

@@ -151,28 +151,6 @@ namespace FoslsContact
 
   template <int dim>
   void
-  MonotoneCycle<dim>::update_linear_operators(const SparseMatrix<double> &A,
-                                              const std::vector<DoFRole> &role)
-  {
-    // The obstacles of the linear cycle are +inf on every level (the
-    // defect obstacle of a DoF that is not truncated is inf - v), so no
-    // bounded DoF is ever active: the truncation is the part that does not
-    // depend on the iterate, the same in every visit.
-    const SparseMatrix<double> *level_matrix = &A;
-    const std::vector<DoFRole> *level_role   = &role;
-    for (unsigned int l = finest; l > linear_coarsest_level; --l)
-      {
-        prepare(l, *level_matrix, *level_role);
-        scratch[l].truncation.truncate_fixed_only();
-        update_operator(l, *level_matrix, *level_role, true);
-        level_matrix = &operators.galerkin(l - 1);
-        level_role   = &hierarchy.level(l - 1).role;
-      }
-  }
-
-
-  template <int dim>
-  void
   MonotoneCycle<dim>::coarse_correction(const unsigned int              l,
                                         const SparseMatrix<double> &    A,
                                         const LevelVector &             r,

@@ -24,21 +24,7 @@ namespace FoslsContact
     , operators(hierarchy, fine_sparsity, rerouting)
     , coarse_solver(&counters.coarse_solve)
     , cycle(hierarchy, this->parameters, pre_smoother, post_smoother, operators, coarse_solver, counters)
-    , linear_multigrid(hierarchy,
-                       this->parameters,
-                       pre_smoother,
-                       post_smoother,
-                       cycle,
-                       operators,
-                       coarse_solver,
-                       counters)
-    , newton_step(this->parameters,
-                  pre_smoother,
-                  post_smoother,
-                  cycle,
-                  linear_multigrid,
-                  counters,
-                  finest)
+    , newton_step(this->parameters, pre_smoother, post_smoother, cycle, counters, finest)
   {
     AssertThrow(hierarchy.level(finest).n_dofs == discretization.level(finest_level).n_dofs,
                 ExcMessage("monotone multigrid: the hierarchy's finest level is not the "

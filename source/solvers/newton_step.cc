@@ -51,14 +51,12 @@ namespace FoslsContact
                               PatchSmoother &           pre_smoother,
                               const PatchSmoother &     post_smoother,
                               MonotoneCycle<dim> &      cycle,
-                              LinearMultigrid<dim> &    linear_multigrid,
                               MultigridCounters &       counters,
                               const unsigned int        finest_level)
     : parameters(parameters)
     , pre_smoother(pre_smoother)
     , post_smoother(post_smoother)
     , cycle(cycle)
-    , linear_multigrid(linear_multigrid)
     , counters(counters)
     , finest(finest_level)
   {}
@@ -123,12 +121,8 @@ namespace FoslsContact
     unsigned int   n_cycles = 0;
     LevelVector    infinite = qp.new_vector();
     infinite                = std::numeric_limits<double>::infinity();
-    const bool dealii_cycle = parameters.linear_cycle == Parameters::Solver::LinearCycle::dealii;
-    auto       apply_cycle  = [&](const LevelVector &r, LevelVector &v) {
-      if (dealii_cycle)
-        linear_multigrid.vmult(v, r);
-      else
-        cycle.run(finest, A, r, infinite, linear_role, v, true);
+    auto           apply_cycle = [&](const LevelVector &r, LevelVector &v) {
+      cycle.run(finest, A, r, infinite, linear_role, v, true);
       ++n_cycles;
     };
     CyclePreconditioner<decltype(apply_cycle)> preconditioner{apply_cycle};
@@ -158,8 +152,6 @@ namespace FoslsContact
             rhs.local_element(i) = 0;
         if (round == 0)
           tolerance = cg_reduction * rhs.l2_norm();
-        if (dealii_cycle)
-          linear_multigrid.prepare(A, linear_role);
         SolverControl         control(parameters.krylov_steps, tolerance, false, false);
         SolverCG<LevelVector> cg(control);
         // round 0 starts from zero; a later round from the last round's

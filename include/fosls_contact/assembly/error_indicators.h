@@ -20,9 +20,9 @@ namespace FoslsContact
    * and its cellwise parts show where the error is: these are the error
    * indicators written to the VTU and summarized in summary.json.
    *
-   * Computed in the dimensionless form the solvers minimize (Scaling), with
+   * Computed in the dimensionless form the solvers minimize (ReferenceScales), with
    * the same quadrature as FoslsAssembler, so that their sum is the J of
-   * ConstrainedQP up to round-off; Scaling::functional() converts to the
+   * ConstrainedQP up to round-off; ReferenceScales::functional() converts to the
    * scene's units.
    */
   template <int dim>

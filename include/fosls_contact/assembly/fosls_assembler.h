@@ -32,7 +32,7 @@ namespace FoslsContact
    * Only declared effects are assembled: the body force enters only if the
    * scene has one, and the face integral over Gamma_C only with contact.
    *
-   * Everything is dimensionless (Scaling): the mesh, the data and the
+   * Everything is dimensionless (ReferenceScales): the mesh, the data and the
    * elastic constants come from the scene in units of L and S, so the
    * weights mean the same functional in every unit system.
    */

@@ -7,7 +7,7 @@
 #include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/scene/physical_mapping.h>
-#include <fosls_contact/scene/scaling.h>
+#include <fosls_contact/scene/reference_scales.h>
 #include <fosls_contact/solvers/monitor.h>
 
 #include <map>
@@ -33,7 +33,7 @@ namespace FoslsContact
      * number in every unit system, so that sqrt(J^) over it is a relative
      * error and an efficiency index is dimensionless.
      */
-    double scaled(const Scaling &scaling, const unsigned int dim) const
+    double scaled(const ReferenceScales &scaling, const unsigned int dim) const
     {
       const double L = scaling.length, S = scaling.stress;
       return std::sqrt((u_l2 * u_l2 / (L * L) + u_h1_semi * u_h1_semi +
@@ -167,7 +167,7 @@ namespace FoslsContact
   private:
     const Discretization<dim> &     discretization;
     const Parameters::AllParameters parameters;
-    const Scaling                   scaling;
+    const ReferenceScales           scaling;
     const PhysicalMapping<dim>      mapping;
   };
 } // namespace FoslsContact

@@ -55,7 +55,7 @@ namespace FoslsContact
 
     const Discretization<dim> & discretization;
     const Parameters::Material &material;
-    const Scaling &             scaling;
+    const ReferenceScales &     scaling;
     const PhysicalMapping<dim> &mapping;
   };
 } // namespace FoslsContact

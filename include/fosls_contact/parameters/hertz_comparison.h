@@ -15,7 +15,7 @@ namespace FoslsContact
      * subsection Hertz comparison: a scene that is a Hertz contact (a
      * cylinder, per unit length in 2D, or a sphere, in 3D, of radius R
      * against a plane, one of them rigid) declares it here, and the run
-     * compares its contact pressure with Hertz's (HertzComparison).
+     * compares its contact pressure with Hertz's (HertzPressure).
      */
     struct HertzComparison
     {

@@ -56,16 +56,6 @@ namespace FoslsContact
       };
 
       /**
-       * The Newton step's linear truncated cycle: the own MonotoneCycle,
-       * or the same cycle run by deal.II's Multigrid (LinearMultigrid).
-       */
-      enum class LinearCycle
-      {
-        own,
-        dealii,
-      };
-
-      /**
        * Where the patch smoother reads the matrix rows of a patch from:
        * copied next to each other per patch (PackedPatches: the fastest
        * sweeps) or the level matrices themselves (a row of a face DoF is
@@ -94,7 +84,6 @@ namespace FoslsContact
       InitialGuess initial_guess       = InitialGuess::coarse_solution;
       unsigned int definiteness_max_dofs = 20000;
       unsigned int krylov_steps          = 50;
-      LinearCycle  linear_cycle          = LinearCycle::own;
       PatchRows    patch_rows            = PatchRows::copied;
       /** 0: as many threads as cores (or DEAL_II_NUM_THREADS). */
       unsigned int threads               = 0;

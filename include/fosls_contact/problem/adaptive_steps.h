@@ -49,7 +49,7 @@ namespace FoslsContact
       double                  time_solve_s = 0, time_step_s = 0;
       /**
        * Hertz scenes: the relative error of the contact pressure, l2 at the
-       * contact vertices and L2 on the contact boundary (HertzComparison).
+       * contact vertices and L2 on the contact boundary (HertzPressure).
        */
       double hertz_pressure_error          = std::numeric_limits<double>::quiet_NaN();
       double hertz_pressure_error_boundary = std::numeric_limits<double>::quiet_NaN();

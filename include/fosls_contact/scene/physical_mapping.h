@@ -8,7 +8,7 @@ namespace FoslsContact
   using namespace dealii;
 
   /**
-   * The mapping of the dimensionless mesh (Scaling) onto the scene's
+   * The mapping of the dimensionless mesh (ReferenceScales) onto the scene's
    * coordinates, x = L x^: a MappingQ whose support points are scaled by
    * L. Everything that reports values in the scene's units integrates and
    * writes with it (Postprocessor), so the VTU shows the body where the

@@ -11,7 +11,7 @@ namespace FoslsContact
 
   /**
    * A data function of the scene, given in the scene's units, seen in the
-   * dimensionless coordinates of the computation (Scaling):
+   * dimensionless coordinates of the computation (ReferenceScales):
    * f^(x^) = factor f(L x^), e.g. factor = L/S for a body force, 1/S for
    * a traction, 1/L for a displacement or a gap, 1 for a direction.
    *

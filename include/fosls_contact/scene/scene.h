@@ -8,7 +8,7 @@
 #include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/scene/mesh_file.h>
 #include <fosls_contact/scene/scaled_function.h>
-#include <fosls_contact/scene/scaling.h>
+#include <fosls_contact/scene/reference_scales.h>
 
 #include <map>
 #include <memory>
@@ -21,7 +21,7 @@ namespace FoslsContact
    * functions of one problem, read from the parameter file.
    *
    * The scene is given in the user's units; the scene hands the rest of
-   * the program its dimensionless form (Scaling, doc/method.md section 1):
+   * the program its dimensionless form (ReferenceScales, doc/method.md section 1):
    * the coarse mesh in units of the reference length L, the data
    * functions divided by their scales, the elastic constants divided by
    * the reference stress S. Only the output converts back.
@@ -60,7 +60,7 @@ namespace FoslsContact
     double constant(const std::string &name) const { return constants.at(name); }
 
     /** The reference length and stress of this scene. */
-    const Scaling &scaling() const { return reference; }
+    const ReferenceScales &scaling() const { return reference; }
     /**
      * The dimensionless elastic constants: mu/S and lambda/S (E/S and nu
      * as well).
@@ -149,7 +149,7 @@ namespace FoslsContact
     const Parameters::Geometry geometry;
     /** The mesh of Geometry/Mesh file (Shape = file), in the scene's units. */
     std::unique_ptr<const MeshFile<dim>> mesh_file;
-    Scaling                    reference;
+    ReferenceScales            reference;
     Parameters::Material       dimensionless_material;
     std::map<std::string, double> constants;
     std::set<types::boundary_id> dirichlet_ids, neumann_ids, contact_ids;

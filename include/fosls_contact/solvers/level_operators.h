@@ -117,16 +117,6 @@ namespace FoslsContact
                          LevelVector &               residual,
                          LevelVector &               r_coarse) const;
     /**
-     * dst += P~^T src for the last P~ of level @p l (owned entries of
-     * @p dst; @p src: the owned entries are read), with @p restricted, a
-     * vector of level l - 1, as work space. Collective.
-     */
-    void restrict_and_add(const unsigned int l,
-                          LevelVector &      dst,
-                          const LevelVector &src,
-                          LevelVector &      restricted) const;
-
-    /**
      * The difference of @p r_coarse to P~^T (r - A v) recomputed, relative
      * to a bound of the terms' size, |P~^T| (|A| |v| + |r|) (max norms),
      * since near the solution r - A v is the small difference of large

@@ -55,12 +55,6 @@ namespace FoslsContact
      */
     void truncate(const LevelVector &ub, const LevelVector &v);
 
-    /**
-     * The truncation of a linear problem (obstacles +inf): only the part
-     * that does not depend on the iterate, the same in every visit.
-     */
-    void truncate_fixed_only() { truncated_dofs = fixed_truncated; }
-
     /** Whether each local DoF (owned and ghost) is truncated. */
     const std::vector<bool> &truncated() const { return truncated_dofs; }
 

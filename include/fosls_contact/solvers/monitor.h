@@ -134,7 +134,7 @@ namespace FoslsContact
      * Print and write J (and the energy norms of the corrections, times
      * the square root) multiplied by @p factor: the solvers work on the
      * dimensionless functional, the user reads it in the scene's units
-     * (Scaling::functional()). The stopping rule is relative and does not
+     * (ReferenceScales::functional()). The stopping rule is relative and does not
      * see it.
      */
     void set_functional_unit(const double factor) { functional_unit = factor; }

@@ -87,22 +87,6 @@ namespace FoslsContact
                              const std::vector<DoFRole> &role);
 
     /**
-     * Bring the truncated prolongations and Galerkin operators of the
-     * linear cycle for the finest level's operator @p A and the linear
-     * roles @p role up to date on every level it smooths, with their patch
-     * smoothers: what its visits do before their coarse corrections, for a
-     * cycle that is run by deal.II's Multigrid (LinearMultigrid).
-     * Collective.
-     */
-    void update_linear_operators(const SparseMatrix<double> &A, const std::vector<DoFRole> &role);
-
-    /**
-     * The linear cycle's coarsest level: the finest level below the
-     * finest with at most linear_coarse_max_dofs DoFs (0 if none).
-     */
-    unsigned int linear_coarsest() const { return linear_coarsest_level; }
-
-    /**
      * Whether the cycle (the linear one if @p linear) solves level @p l
      * exactly instead of smoothing it and visiting the levels below.
      */

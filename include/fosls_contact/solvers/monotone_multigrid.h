@@ -8,7 +8,6 @@
 #include <fosls_contact/solvers/coarse_solver.h>
 #include <fosls_contact/solvers/flux_rerouting.h>
 #include <fosls_contact/solvers/level_operators.h>
-#include <fosls_contact/solvers/linear_multigrid.h>
 #include <fosls_contact/solvers/monotone_cycle.h>
 #include <fosls_contact/solvers/multilevel_hierarchy.h>
 #include <fosls_contact/solvers/newton_step.h>
@@ -33,9 +32,8 @@ namespace FoslsContact
    *   prolongations and the Galerkin operators;
    * - CoarseObstacles: the obstacles of the coarse levels;
    * - CoarseSolver: the exact solve of the coarsest level;
-   * - MonotoneCycle: the cycle; NewtonStep: the Newton step;
-   * - LinearMultigrid: the Newton step's linear cycle run by deal.II's
-   *   Multigrid (Solver/Linear cycle = deal.II);
+   * - MonotoneCycle: the cycle (and the Newton step's linear cycle);
+   *   NewtonStep: the Newton step;
    * - MultigridCounters: what they count and time (statistics()).
    *
    * Distributed over the processes of the mesh, the method is the same
@@ -94,7 +92,6 @@ namespace FoslsContact
     LevelOperators<dim>            operators;
     CoarseSolver                   coarse_solver;
     MonotoneCycle<dim>             cycle;
-    LinearMultigrid<dim>           linear_multigrid;
     NewtonStep<dim>                newton_step;
   };
 } // namespace FoslsContact

@@ -3,7 +3,6 @@
 
 #include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
-#include <fosls_contact/solvers/linear_multigrid.h>
 #include <fosls_contact/solvers/monotone_cycle.h>
 #include <fosls_contact/solvers/patch_smoother.h>
 #include <fosls_contact/solvers/solver_statistics.h>
@@ -20,7 +19,7 @@ namespace FoslsContact
    *     its bound whose multiplier (b - A x)_i is negative counts as
    *     inactive, so that the direction can release it): CG steps
    *     preconditioned by the linear truncated cycle (MonotoneCycle with
-   *     linear = true, or LinearMultigrid, Solver/Linear cycle), until the residual is cg_reduction times that of
+   *     linear = true), until the residual is cg_reduction times that of
    *     the first round (at most Krylov steps). A free DoF that the
    *     direction would push past its bound is instead moved exactly to
    *     its bound and the linear problem solved again without it, as in a
@@ -51,7 +50,6 @@ namespace FoslsContact
                PatchSmoother &           pre_smoother,
                const PatchSmoother &     post_smoother,
                MonotoneCycle<dim> &      cycle,
-               LinearMultigrid<dim> &    linear_multigrid,
                MultigridCounters &       counters,
                const unsigned int        finest_level);
 
@@ -107,7 +105,6 @@ namespace FoslsContact
     PatchSmoother &           pre_smoother;
     const PatchSmoother &     post_smoother;
     MonotoneCycle<dim> &      cycle;
-    LinearMultigrid<dim> &    linear_multigrid;
     MultigridCounters &       counters;
     const unsigned int        finest;
     /** The linear roles, and those the smoother was last set up with. */

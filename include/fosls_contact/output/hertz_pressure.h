@@ -1,5 +1,5 @@
-#ifndef fosls_contact_output_hertz_comparison_h
-#define fosls_contact_output_hertz_comparison_h
+#ifndef fosls_contact_output_hertz_pressure_h
+#define fosls_contact_output_hertz_pressure_h
 
 #include <deal.II/base/tensor.h>
 
@@ -33,16 +33,16 @@ namespace FoslsContact
    * percent, improving with the mesh.
    */
   template <int dim>
-  class HertzComparison
+  class HertzPressure
   {
   public:
     /**
      * @p normal: the unit obstacle normal at the contact point; the
      * material's E and nu are in the scene's units.
      */
-    HertzComparison(const Parameters::HertzComparison &hertz,
-                    const Parameters::Material &       material,
-                    const Tensor<1, dim> &             normal);
+    HertzPressure(const Parameters::HertzComparison &hertz,
+                  const Parameters::Material &       material,
+                  const Tensor<1, dim> &             normal);
 
     /**
      * Compare with @p force and the contact table @p rows

@@ -1,7 +1,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <fosls_contact/base/json.h>
-#include <fosls_contact/output/hertz_comparison.h>
+#include <fosls_contact/output/hertz_pressure.h>
 
 #include <cmath>
 #include <iomanip>
@@ -11,9 +11,9 @@
 namespace FoslsContact
 {
   template <int dim>
-  HertzComparison<dim>::HertzComparison(const Parameters::HertzComparison &hertz,
-                                        const Parameters::Material &       material,
-                                        const Tensor<1, dim> &             normal)
+  HertzPressure<dim>::HertzPressure(const Parameters::HertzComparison &hertz,
+                                    const Parameters::Material &       material,
+                                    const Tensor<1, dim> &             normal)
     : hertz(hertz)
     , contact_modulus(material.youngs_modulus /
                       (1. - material.poisson_ratio * material.poisson_ratio))
@@ -32,7 +32,7 @@ namespace FoslsContact
 
   template <int dim>
   double
-  HertzComparison<dim>::distance(const Tensor<1, dim> &p) const
+  HertzPressure<dim>::distance(const Tensor<1, dim> &p) const
   {
     Tensor<1, dim> d = p - center;
     // (axis is zero but for a cylinder in 3D, whose distance is from the
@@ -44,7 +44,7 @@ namespace FoslsContact
 
   template <int dim>
   double
-  HertzComparison<dim>::pressure(const double r) const
+  HertzPressure<dim>::pressure(const double r) const
   {
     return r < a ? p0 * std::sqrt(1. - r * r / (a * a)) : 0.;
   }
@@ -52,7 +52,7 @@ namespace FoslsContact
 
   template <int dim>
   void
-  HertzComparison<dim>::evaluate(const Tensor<1, dim> &                           total_force,
+  HertzPressure<dim>::evaluate(const Tensor<1, dim> &                           total_force,
                                  const std::vector<typename ContactRow<dim>::Values> &rows)
   {
     const double R = hertz.radius, pi = numbers::PI;
@@ -112,7 +112,7 @@ namespace FoslsContact
 
   template <int dim>
   std::string
-  HertzComparison<dim>::report() const
+  HertzPressure<dim>::report() const
   {
     std::ostringstream out;
     out << std::setprecision(4) << "Hertz ("
@@ -133,7 +133,7 @@ namespace FoslsContact
 
   template <int dim>
   std::string
-  HertzComparison<dim>::json() const
+  HertzPressure<dim>::json() const
   {
     const auto number = json_number;
     std::ostringstream out;
@@ -159,11 +159,11 @@ namespace FoslsContact
 
   template <int dim>
   bool
-  HertzComparison<dim>::cylinder() const
+  HertzPressure<dim>::cylinder() const
   {
     return hertz.shape == Parameters::HertzComparison::Shape::cylinder;
   }
 
-  template class HertzComparison<2>;
-  template class HertzComparison<3>;
+  template class HertzPressure<2>;
+  template class HertzPressure<3>;
 } // namespace FoslsContact

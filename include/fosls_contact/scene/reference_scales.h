@@ -1,5 +1,5 @@
-#ifndef fosls_contact_scene_scaling_h
-#define fosls_contact_scene_scaling_h
+#ifndef fosls_contact_scene_reference_scales_h
+#define fosls_contact_scene_reference_scales_h
 
 #include <cmath>
 
@@ -18,7 +18,7 @@ namespace FoslsContact
    * for all of them. Every number the program reports is converted back
    * by the factors below.
    */
-  struct Scaling
+  struct ReferenceScales
   {
     double length = 1.; ///< L
     double stress = 1.; ///< S

@@ -3,6 +3,10 @@ to start it, and the templates of the reports they write.
 
     from common import ROOT, BIN, run, load_template
 
+BIN is build/fosls-contact, or the program that the environment variable
+FOSLS_CONTACT_BIN names (another build, e.g. that of a git worktree
+without one of its own).
+
 A scene is named by its file in prm/; settings are "Subsection/Name=value"
 strings or a dict {"Subsection/Name": value}, each given to the program as
 one --set, in their order.
@@ -18,7 +22,8 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = os.path.join(ROOT, "build")
-BIN = os.path.join(BUILD, "fosls-contact")
+BIN = os.path.abspath(os.environ.get("FOSLS_CONTACT_BIN")
+                      or os.path.join(BUILD, "fosls-contact"))
 RESULTS = os.path.join(ROOT, "bench", "results")
 MPIRUN = shutil.which("mpirun") or "mpirun"
 # Open MPI refuses to start as root (containers, CI) without these two

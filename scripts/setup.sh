@@ -2,11 +2,15 @@
 # Install what is missing (Debian 12, apt-get) and build fosls-contact in build/.
 #
 #   scripts/setup.sh            # or: source scripts/setup.sh
+#   scripts/setup.sh --sanitize # build-asan/ instead: the same Release
+#                               # build with AddressSanitizer and UBSan
+#                               # (CMake option FOSLS_SANITIZE=address)
 #
 # Idempotent: apt-get runs only if a package is missing; cmake and make only
 # rebuild what changed. Build messages go to stderr, so that the stdout of
 # scripts/run.sh is the program's own output.
-# Environment: FOSLS_JOBS (default 2) = parallel make jobs.
+# Environment: FOSLS_JOBS (default 2) = parallel make jobs; FOSLS_TARGET
+# (default all) = the make target (.ci/run: sanitize_tests).
 
 export DEBIAN_FRONTEND=noninteractive
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -39,13 +43,19 @@ fosls_setup() (
       "${missing[@]}" >&2
   fi
 
-  mkdir -p "$root/build"
-  cd "$root/build"
+  local build=build options=(-DCMAKE_BUILD_TYPE=Release)
+  case "${1:-}" in
+    "") ;;
+    --sanitize) build=build-asan options+=(-DFOSLS_SANITIZE=address) ;;
+    *) echo "setup: unknown argument '$1' (the only one is --sanitize)" >&2; exit 1 ;;
+  esac
+  mkdir -p "$root/$build"
+  cd "$root/$build"
   # re-run cmake every time: cheap, and it picks up new source/test files
   # (the sources are collected by file(GLOB_RECURSE))
-  cmake -DCMAKE_BUILD_TYPE=Release .. >&2
-  make -j"${FOSLS_JOBS:-2}" >&2
+  cmake "${options[@]}" .. >&2
+  make -j"${FOSLS_JOBS:-2}" "${FOSLS_TARGET:-all}" >&2
 )
 
 # executed or sourced: the status of the script is that of the setup
-fosls_setup
+fosls_setup "$@"

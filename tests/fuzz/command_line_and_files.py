@@ -1,4 +1,4 @@
-# ctest: long
+# ctest: long sanitize
 """Fuzz the command line, the scene files and the parameter values of
 fosls-contact.
 

@@ -16,7 +16,7 @@
 # of its value at zero (the first J of the multigrid run from a zero start;
 # J at the solution is round-off and differs between runs in its first
 # digit) and the KKT residual is below 1e-12.
-# ctest: mpirun
+# ctest: mpirun sanitize
 import csv
 import os
 import sys

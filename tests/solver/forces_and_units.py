@@ -21,7 +21,7 @@
 #    lines in N/mm, the zone in mm and MPa, summary.json "units"; the names
 #    change no number; scripts/plot.py draws the run. Bad names are refused
 #    in one line.
-# ctest: mpirun
+# ctest: mpirun sanitize
 import csv
 import json
 import math

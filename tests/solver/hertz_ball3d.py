@@ -14,6 +14,7 @@
 # residual < 1e-10, the contact force vertical, Hertz's a between the
 # largest active and the smallest inactive vertex radius, peak pressure
 # within 10% of p0.
+# ctest: sanitize
 import csv
 import math
 import os

@@ -16,6 +16,7 @@
 #  - SIGTERM before the first solve finished (as soon as the screen shows
 #    the first phase): exit code 4, one line saying that nothing was
 #    written, and no output directory.
+# ctest: sanitize
 import json
 import os
 import signal

@@ -14,6 +14,9 @@
 #    under ulimit -v 1 GB: the loop stops refining before a mesh that
 #    might not fit (adaptive_stop says so), with exit code 0, before
 #    Adaptivity/Max DoFs.
+# Not under the sanitizers: ASan reserves terabytes of address space for its
+# shadow memory, and the program cannot start under ulimit -v.
+# ctest: no_sanitize
 import json
 import os
 import subprocess

@@ -11,6 +11,7 @@
 # vertex 3.0e-3 inside the circle measured) and the force changes (by 2.4%
 # measured). (The definiteness check is off: it does not change the
 # solution, and took most of each run's time.)
+# ctest: sanitize
 import csv
 import math
 import os

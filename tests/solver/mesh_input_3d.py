@@ -8,7 +8,7 @@
 #    names it absolutely and runs again from anywhere to the same force;
 #  - on 2 MPI processes the quarter ball's force and J are those of 1
 #    process to 1e-8.
-# ctest: mpirun
+# ctest: mpirun sanitize
 import os
 import shutil
 import sys

@@ -14,6 +14,7 @@
 # (paper section 7). The patch order (MultilevelHierarchy, VertexKey)
 # puts the vertices of the uniformly refined square into 4 colors on every
 # level (old vertices, midpoints of x and of y lines, cell centers).
+# ctest: sanitize
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

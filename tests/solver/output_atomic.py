@@ -12,6 +12,7 @@
 # file left. A
 # filesystem without RENAME_EXCHANGE: the fallback (two renames) publishes
 # the files and keeps the user's file.
+# ctest: sanitize
 import os
 import re
 import sys

@@ -26,6 +26,7 @@
 #   the boundary edges lie on the circle of radius 50 mm as well.
 # - prm/ball3d.prm (2 levels), 3D: the same fields without stress_zz, and
 #   the contact surface's force.
+# ctest: sanitize
 import csv
 import json
 import math

@@ -5,7 +5,7 @@
 # next to the new summary). Runs of the square,
 # 2 levels: on 2 processes, then on 1 into the same directory, then with
 # Write vtu = false; every time the .pvtu lists exactly the pieces present.
-# ctest: timeout=120 mpirun
+# ctest: timeout=120 mpirun sanitize
 import os
 import re
 import sys

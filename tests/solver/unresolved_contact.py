@@ -10,6 +10,7 @@
 # vertex, a force of 0.0028); the cube of prm/cube3d.prm (3 levels) under
 # a pyramid touching one vertex. Resolved and without a warning: the square
 # and the cube on their flat foundations.
+# ctest: sanitize
 import os
 import sys
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

@@ -13,6 +13,7 @@
 //   std::runtime_error stays one).
 // Only the first process prints; a check holds if it holds on every
 // process.
+// ctest: sanitize
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 

@@ -9,6 +9,7 @@
 // - anything else (a std::string) through Utilities::MPI::all_gather();
 // and on MPI_COMM_SELF the object itself. Only the first process prints;
 // a check holds if it holds on every process.
+// ctest: sanitize
 #include <deal.II/base/mpi.h>
 
 #include <fosls_contact/qp/level_algebra.h>

@@ -16,10 +16,12 @@ namespace FoslsContact
 {
   template <int dim>
   FoslsAssembler<dim>::FoslsAssembler(const Discretization<dim> &discretization,
-                                      const Parameters::Weights &weights)
+                                      const Parameters::Weights &weights,
+                                      const LevelVector *        friction_reference)
     : discretization(discretization)
     , material(discretization.get_scene().material())
     , weights(weights)
+    , friction_reference(friction_reference)
   {
     const auto &fe = discretization.get_fe();
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
@@ -68,6 +70,8 @@ namespace FoslsContact
         , un(fe.n_dofs_per_cell())
         , sn(fe.n_dofs_per_cell())
         , f(dim)
+        , mean_traction(fe.n_dofs_per_cell())
+        , k_friction(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
       {}
 
       AssemblyScratch(const AssemblyScratch &other)
@@ -84,6 +88,8 @@ namespace FoslsContact
         , un(other.un.size())
         , sn(other.sn.size())
         , f(dim)
+        , mean_traction(other.mean_traction.size())
+        , k_friction(other.k_friction.m(), other.k_friction.n())
       {}
 
       FEValues<dim>               fe_values;
@@ -94,6 +100,9 @@ namespace FoslsContact
       std::vector<Tensor<1, dim>> divergence;
       std::vector<double>         un, sn;
       Vector<double>              f;
+      /** scratch of friction_terms() */
+      std::vector<Tensor<1, dim>> mean_traction;
+      FullMatrix<double>          k_friction;
     };
 
     /** What one cell adds to the functional (already rotated). */
@@ -259,6 +268,85 @@ namespace FoslsContact
                   copy.r_compl(i) += 0.5 * c_compl * g * sn[i] * JxW;
                 }
             }
+          if (scene.has_friction())
+            friction_terms(cell, f, scratch, copy);
+        }
+  }
+
+
+  template <int dim>
+  void
+  FoslsAssembler<dim>::friction_terms(const typename Triangulation<dim>::cell_iterator &cell,
+                                      const unsigned int                               f,
+                                      AssemblyScratch<dim> &                           scratch,
+                                      AssemblyCopy &                                   copy) const
+  {
+    // The bilinear part of the friction term (doc/method.md section 7.7),
+    //   C_compl sum_{v of F} |F| / 2^(dim-1) (P_F sigma_F n) . (P_v u(v)),
+    // with sigma_F n the face's mean traction (the rotated coordinates of
+    // the face, ContactEntities::add_rotations()) and P the projections
+    // onto the tangent planes of the obstacle at the face's center and at
+    // the vertex (those of the rotations): symmetrized like the normal
+    // term. Its part linear in u is taken at the step's reference
+    // displacement p, u = (u - p) + p: the right-hand side gets K p.
+    const auto &       scene = discretization.get_scene();
+    const auto &       fe    = discretization.get_fe();
+    const unsigned int n     = fe.n_dofs_per_cell();
+    auto &             fe_face = scratch.fe_face; // (reinit'ed on face f)
+    double             area    = 0;
+    std::vector<Tensor<1, dim>> &traction = scratch.mean_traction;
+    std::fill(traction.begin(), traction.end(), Tensor<1, dim>());
+    for (unsigned int q = 0; q < fe_face.n_quadrature_points; ++q)
+      {
+        const Tensor<1, dim> n_b = fe_face.normal_vector(q);
+        area += fe_face.JxW(q);
+        for (unsigned int i = 0; i < n; ++i)
+          if (stress_row[i] >= 0)
+            traction[i][stress_row[i]] +=
+              fe_face[FEValuesExtractors::Vector(dim + stress_row[i] * dim)].value(i, q) * n_b *
+              fe_face.JxW(q);
+      }
+    const Tensor<1, dim> n_F = scene.obstacle_normal(cell->face(f)->center());
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        traction[i] /= area;
+        traction[i] -= (traction[i] * n_F) * n_F;
+      }
+    const double weight = weights.c_compl * area / GeometryInfo<dim>::vertices_per_face;
+    FullMatrix<double> &k = scratch.k_friction;
+    k = 0;
+    for (unsigned int fv = 0; fv < GeometryInfo<dim>::vertices_per_face; ++fv)
+      {
+        const unsigned int   v   = GeometryInfo<dim>::face_to_cell_vertices(f, fv);
+        const Tensor<1, dim> n_v = scene.obstacle_normal(cell->vertex(v));
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            // u_j = e_c at vertex v: its tangential part
+            const unsigned int j = fe.component_to_system_index(c, v);
+            Tensor<1, dim>     e;
+            e[c] = 1;
+            e -= (e * n_v) * n_v;
+            for (unsigned int i = 0; i < n; ++i)
+              if (stress_row[i] >= 0)
+                {
+                  const double value = 0.5 * weight * (traction[i] * e);
+                  k(i, j) += value;
+                  k(j, i) += value;
+                }
+          }
+      }
+    copy.k_compl.add(1., k);
+    if (friction_reference == nullptr)
+      return;
+    // (the reference's displacement DoFs only: K p with p zero on the
+    // stress DoFs, whose couplings to the tractions are no part of it)
+    for (unsigned int j = 0; j < n; ++j)
+      if (stress_row[j] < 0)
+        {
+          const double p_j = friction_reference->local_element(copy.dofs[j]);
+          if (p_j != 0)
+            for (unsigned int i = 0; i < n; ++i)
+              copy.r_compl(i) += k(i, j) * p_j;
         }
   }
 

@@ -108,13 +108,17 @@ namespace FoslsContact
                     c += normal_component(0, q) * fe_face.JxW(q);
                     check_obstacle_normal(fe_face.quadrature_point(q), fe_face.normal_vector(q));
                   }
-                bound_contact_face(data, face_rt);
+                bound_contact_face(data, face_rt, scene.has_friction());
+                std::array<unsigned int, GeometryInfo<dim>::vertices_per_face> vertices;
+                for (const unsigned int v : face->vertex_indices())
+                  vertices[v] = face->vertex_index(v);
                 boundary.contact_faces.push_back({static_cast<unsigned int>(face->index()),
                                                   face_rt,
                                                   face->center(),
                                                   scene.obstacle_normal(face->center()),
                                                   area,
-                                                  c / area});
+                                                  c / area,
+                                                  vertices});
               }
           }
     });
@@ -155,13 +159,15 @@ namespace FoslsContact
   template <int dim>
   void
   BoundaryFaceConditions<dim>::bound_contact_face(LevelData<dim> &                                data,
-                                          const std::array<types::global_dof_index, dim> &face_rt)
+                                          const std::array<types::global_dof_index, dim> &face_rt,
+                                          const bool friction)
   {
-    // the tangential tractions are 0, the normal one (the first rotated
+    // the tangential tractions are 0 (without friction) or bounded by the
+    // slip bound (FrictionLaw sets it), the normal one (the first rotated
     // coordinate, see add_rotations()) is bounded by 0
     for (unsigned int m = 0; m < dim; ++m)
       {
-        data.role[face_rt[m]]                       = DoFRole::fixed;
+        data.role[face_rt[m]]                       = friction ? DoFRole::traction : DoFRole::fixed;
         data.fixed_values.local_element(face_rt[m]) = 0;
       }
     data.role[face_rt[0]]                       = DoFRole::bounded;

@@ -45,6 +45,9 @@ namespace FoslsContact
             {
               data.role[dofs[0]]                       = DoFRole::bounded;
               data.upper_bounds.local_element(dofs[0]) = scene.gap().value(p);
+              if (scene.has_friction())
+                for (unsigned int k = 1; k < dim; ++k)
+                  data.role[dofs[k]] = DoFRole::slip;
               continue;
             }
           const auto &         mask = d->second;
@@ -116,7 +119,9 @@ namespace FoslsContact
           data.fixed_values.local_element(dofs[i]) = R(k, i) * values[k];
         }
     for (unsigned int i = 1; i < dim; ++i)
-      data.role[dofs[i]] = fixed[i] ? DoFRole::fixed : DoFRole::free;
+      data.role[dofs[i]] = fixed[i]              ? DoFRole::fixed :
+                           scene.has_friction() ? DoFRole::slip :
+                                                  DoFRole::free;
     data.role[dofs[0]]                       = DoFRole::bounded;
     data.upper_bounds.local_element(dofs[0]) = gap;
     return true;
@@ -191,6 +196,42 @@ namespace FoslsContact
                                          n,
                                          data.upper_bounds.local_element(vertex[0]),
                                          vertex[0] < n_owned});
+      }
+  }
+
+
+  template <int dim>
+  void
+  ContactEntities<dim>::add_friction_faces(LevelData<dim> &data, const BoundaryData &boundary) const
+  {
+    // The trapezoidal rule on a face gives each of its 2^(dim-1) vertices
+    // the weight |F| / 2^(dim-1); a vertex whose tangential displacement is
+    // prescribed (a Dirichlet or roller vertex) has no slip DoF, and its
+    // term w |x - p| is a constant of J, left out.
+    for (const auto &face : boundary.contact_faces)
+      {
+        FrictionFace<dim> friction;
+        friction.normal = face.dofs[0];
+        for (unsigned int k = 1; k < dim; ++k)
+          friction.traction[k - 1] = face.dofs[k];
+        friction.weight = face.area / GeometryInfo<dim>::vertices_per_face;
+        friction.center = face.center;
+        for (const unsigned int vi : face.vertices)
+          {
+            const auto vertex = data.vertex_dofs.find(vi);
+            if (vertex == data.vertex_dofs.end())
+              continue;
+            std::array<types::global_dof_index, dim - 1> slip;
+            bool                                         slips = true;
+            for (unsigned int k = 1; k < dim; ++k)
+              {
+                slip[k - 1] = vertex->second[k];
+                slips       = slips && data.role[slip[k - 1]] == DoFRole::slip;
+              }
+            if (slips)
+              friction.slips.push_back(slip);
+          }
+        data.friction_faces.push_back(friction);
       }
   }
 

@@ -124,15 +124,20 @@ namespace FoslsContact
   Discretization<dim>::update_data()
   {
     // (a level's data is filled from empty: setup_level() appends the
-    // contact vertices, faces and rotations)
+    // contact vertices, faces and rotations. The levels are swapped for
+    // fresh ones, not assigned: assigning a LevelData copies its vectors,
+    // and deal.II 9.4 updates the ghost values of a ghosted vector whose
+    // local range equals the source's, which on a process that owns no
+    // DoF of the level is a collective the other processes do not join)
+    std::vector<LevelData<dim>> fresh(levels.size());
     for (unsigned int l = 0; l < levels.size(); ++l)
       {
-        LevelData<dim> fresh;
-        fresh.level       = levels[l].level;
-        fresh.active_mesh = levels[l].active_mesh;
-        levels[l]         = std::move(fresh);
-        setup_level(l);
+        fresh[l].level       = levels[l].level;
+        fresh[l].active_mesh = levels[l].active_mesh;
       }
+    levels.swap(fresh);
+    for (unsigned int l = 0; l < levels.size(); ++l)
+      setup_level(l);
   }
 
 
@@ -221,6 +226,8 @@ namespace FoslsContact
     update_ghosts(data.fixed_values);
     update_ghosts(data.upper_bounds);
     CollectiveError::run(comm, [&]() { contact.add_rotations(data, boundary); });
+    if (scene.has_friction())
+      contact.add_friction_faces(data, boundary);
     set_coupling_pattern(l);
   }
 

@@ -45,9 +45,11 @@ namespace FoslsContact
   template <int dim>
   ContactSurface<dim>::Fields::Fields(
     const Scene<dim> &                                              scene,
-    const std::map<unsigned int, typename ContactRow<dim>::Values> &rows)
+    const std::map<unsigned int, typename ContactRow<dim>::Values> &rows,
+    const bool                                                      friction)
     : scene(scene)
     , rows(rows)
+    , friction(friction)
   {}
 
 
@@ -55,12 +57,36 @@ namespace FoslsContact
   std::vector<std::string>
   ContactSurface<dim>::Fields::get_names() const
   {
-    return {"contact_pressure",
-            "normal_displacement",
-            "gap",
-            "remaining_gap",
-            "in_contact",
-            "face_pressure"};
+    std::vector<std::string> names = {"contact_pressure",
+                                      "normal_displacement",
+                                      "gap",
+                                      "remaining_gap",
+                                      "in_contact",
+                                      "face_pressure"};
+    if (friction)
+      {
+        names.insert(names.end(), dim, "slip");
+        names.insert(names.end(), dim, "tangential_traction");
+        names.push_back("friction_status");
+      }
+    return names;
+  }
+
+
+  template <int dim>
+  std::vector<DataComponentInterpretation::DataComponentInterpretation>
+  ContactSurface<dim>::Fields::get_data_component_interpretation() const
+  {
+    std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
+      6, DataComponentInterpretation::component_is_scalar);
+    if (friction)
+      {
+        interpretation.insert(interpretation.end(),
+                              2 * dim,
+                              DataComponentInterpretation::component_is_part_of_vector);
+        interpretation.push_back(DataComponentInterpretation::component_is_scalar);
+      }
+    return interpretation;
   }
 
 
@@ -117,6 +143,9 @@ namespace FoslsContact
             computed[q][2] = r[Row::gap];
             computed[q][3] = r[Row::remaining_gap];
             computed[q][4] = r[Row::in_contact];
+            if (friction)
+              for (unsigned int c = 0; c <= 2 * dim; ++c)
+                computed[q][6 + c] = r[Row::slip + c];
           }
         else
           {
@@ -129,6 +158,10 @@ namespace FoslsContact
             computed[q][2]   = gap;
             computed[q][3]   = gap - u * n_o;
             computed[q][4]   = 0;
+            // (its tangential displacement is prescribed: it sticks)
+            if (friction)
+              for (unsigned int c = 0; c <= 2 * dim; ++c)
+                computed[q][6 + c] = c == 2 * dim ? 1. : 0.;
           }
       }
   }

@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <fosls_contact/discretization/normal_tangential_basis.h>
 #include <fosls_contact/output/contact_table.h>
 
 #include <algorithm>
@@ -11,8 +12,10 @@
 namespace FoslsContact
 {
   template <int dim>
-  ContactTable<dim>::ContactTable(const Discretization<dim> &discretization)
+  ContactTable<dim>::ContactTable(const Discretization<dim> &discretization,
+                                  const FrictionTerms *      friction)
     : discretization(discretization)
+    , friction(friction)
   {}
 
 
@@ -86,7 +89,69 @@ namespace FoslsContact
           row[Row::share]         = std::pow(scaling.length, dim - 1) * share[cv.vertex_index];
           rows[cv.vertex_index]   = row;
         }
+    if (friction != nullptr)
+      add_friction(x_local, rows);
     return rows;
+  }
+
+
+  template <int dim>
+  void
+  ContactTable<dim>::add_friction(const LocalElements &                          x_local,
+                                  std::map<unsigned int, typename ContactRow<dim>::Values> &rows) const
+  {
+    using Row                      = ContactRow<dim>;
+    const ReferenceScales &scaling = discretization.get_scene().scaling();
+    const auto &           level   = discretization.level(discretization.finest_level());
+    const LocalElements    reference(friction->slip_references);
+    // the tangential traction of each contact face (the tangential part of
+    // its mean traction H y, ContactEntities::add_rotations()), summed at
+    // its vertices
+    std::map<unsigned int, std::pair<Tensor<1, dim>, unsigned int>> traction;
+    level.for_each_cell(discretization.get_dof_handler(), [&](const auto &cell) {
+      for (const unsigned int f : cell->face_indices())
+        if (cell->at_boundary(f) &&
+            discretization.get_scene().is_contact(cell->face(f)->boundary_id()))
+          {
+            const auto face = cell->face(f);
+            const auto dofs = level.face_dofs.at(face->index());
+            const auto H    = NormalTangentialBasis<dim>::householder(
+              discretization.get_scene().obstacle_normal(face->center()));
+            Tensor<1, dim> t;
+            for (unsigned int k = 1; k < dim; ++k)
+              for (unsigned int d = 0; d < dim; ++d)
+                t[d] += H(d, k) * x_local(dofs[k]);
+            for (const unsigned int v : face->vertex_indices())
+              {
+                auto &entry = traction[face->vertex_index(v)];
+                entry.first += t;
+                entry.second += 1;
+              }
+          }
+    });
+    for (auto &[vertex, row] : rows)
+      {
+        const auto &   dofs = level.vertex_dofs.at(vertex);
+        const auto &   R    = level.rotations[level.rotation_of_dof[dofs[0]]].matrix;
+        Tensor<1, dim> slip;
+        bool           slips = false;
+        for (unsigned int k = 1; k < dim; ++k)
+          {
+            const bool   free = level.role[dofs[k]] == DoFRole::slip;
+            const double d    = free ? x_local(dofs[k]) - reference(dofs[k]) : 0.;
+            slips             = slips || d != 0;
+            for (unsigned int c = 0; c < dim; ++c)
+              slip[c] += R(c, k) * d;
+          }
+        const auto t = traction.find(vertex);
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            row[Row::slip + c] = scaling.length * slip[c];
+            row[Row::traction_t + c] =
+              t == traction.end() ? 0. : scaling.stress * t->second.first[c] / t->second.second;
+          }
+        row[Row::status] = row[Row::in_contact] == 0 ? 0 : slips ? 2 : 1;
+      }
   }
 
 
@@ -119,14 +184,26 @@ namespace FoslsContact
     std::ostringstream out;
     if (Utilities::MPI::this_mpi_process(discretization.get_communicator()) != 0)
       return out.str();
+    using Row = ContactRow<dim>;
     out << (dim == 2 ? "x,y,u_x,u_y" : "x,y,z,u_x,u_y,u_z")
-        << ",u_n,gap,remaining_gap,sigma_nn,boundary_share,in_contact\n";
-    out << std::setprecision(10);
+        << ",u_n,gap,remaining_gap,sigma_nn,boundary_share,in_contact";
+    if (friction != nullptr)
+      out << (dim == 2 ? ",slip_x,slip_y,traction_t_x,traction_t_y" :
+                         ",slip_x,slip_y,slip_z,traction_t_x,traction_t_y,traction_t_z")
+          << ",status";
+    out << '\n' << std::setprecision(10);
     for (const auto &row : rows)
       {
-        for (unsigned int d = 0; d < ContactRow<dim>::in_contact; ++d)
+        for (unsigned int d = 0; d < Row::in_contact; ++d)
           out << row[d] << ',';
-        out << int(row[ContactRow<dim>::in_contact]) << '\n';
+        out << int(row[Row::in_contact]);
+        if (friction != nullptr)
+          {
+            for (unsigned int d = Row::slip; d < Row::status; ++d)
+              out << ',' << row[d];
+            out << ',' << int(row[Row::status]);
+          }
+        out << '\n';
       }
     return out.str();
   }

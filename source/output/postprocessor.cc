@@ -64,12 +64,14 @@ namespace FoslsContact
 
   template <int dim>
   Postprocessor<dim>::Postprocessor(const Discretization<dim> &       discretization,
-                                    const Parameters::AllParameters &parameters)
+                                    const Parameters::AllParameters &parameters,
+                                    const FrictionTerms *            friction)
     : discretization(discretization)
     , parameters(parameters)
     , scaling(discretization.get_scene().scaling())
     , mapping(dynamic_cast<const MappingQ<dim> &>(discretization.get_mapping()).get_degree(),
               scaling.length)
+    , friction(friction)
   {}
 
 
@@ -392,12 +394,12 @@ namespace FoslsContact
     const bool table    = adaptive && discretization.get_scene().has_contact();
     if (!parameters.output.write_vtu && !adaptive)
       return "";
-    const std::string csv = adaptive ? ContactTable<dim>(discretization).csv(x) : ""; // (collective)
+    const std::string csv = adaptive ? ContactTable<dim>(discretization, friction).csv(x) : ""; // (collective)
     std::string       error;
     try
       {
         if (parameters.output.write_vtu)
-          VtuOutput<dim>(discretization, parameters.material, mapping)
+          VtuOutput<dim>(discretization, parameters.material, mapping, friction)
             .write(x, solution_in_scene_units(x), indicators, output, step);
         if (table && Utilities::MPI::this_mpi_process(discretization.get_communicator()) == 0)
           output.write("contact_" + Utilities::int_to_string(step, 4) + ".csv",
@@ -423,7 +425,7 @@ namespace FoslsContact
                             const std::map<std::string, std::string> &extra_files,
                             OutputDirectory &                          output) const
   {
-    const std::string table = ContactTable<dim>(discretization).csv(x); // (collective)
+    const std::string table = ContactTable<dim>(discretization, friction).csv(x); // (collective)
     write(table, monitor.csv(), summary, used_parameters, extra_files, output);
   }
 

@@ -35,11 +35,13 @@ namespace FoslsContact
   template <int dim>
   VtuOutput<dim>::VtuOutput(const Discretization<dim> &  discretization,
                             const Parameters::Material & material,
-                            const PhysicalMapping<dim> & mapping)
+                            const PhysicalMapping<dim> & mapping,
+                            const FrictionTerms *        friction)
     : discretization(discretization)
     , material(material)
     , scaling(discretization.get_scene().scaling())
     , mapping(mapping)
+    , friction(friction)
   {}
 
 
@@ -77,7 +79,7 @@ namespace FoslsContact
     // (the rows of contact.csv at this process's contact vertices: one
     // decision of which vertex is in contact for the cells' status and
     // the contact surface)
-    const auto rows = ContactTable<dim>(discretization).local_rows(x);
+    const auto rows = ContactTable<dim>(discretization, friction).local_rows(x);
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int v : cell->vertex_indices())
@@ -135,7 +137,7 @@ namespace FoslsContact
     if (scene.has_contact())
       {
         ContactSurface<dim>                  surface(scene);
-        typename ContactSurface<dim>::Fields fields(scene, rows);
+        typename ContactSurface<dim>::Fields fields(scene, rows, friction != nullptr);
         surface.attach_dof_handler(discretization.get_dof_handler());
         surface.add_data_vector(solution, fields);
         // (with the mapping of the computation)

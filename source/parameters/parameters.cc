@@ -17,6 +17,7 @@ namespace FoslsContact
       Weights::declare_parameters(prm);
       Data::declare_parameters(prm);
       BoundaryConditions::declare_parameters(prm);
+      Friction::declare_parameters(prm);
       Solver::declare_parameters(prm);
       Output::declare_parameters(prm);
       HertzComparison::declare_parameters(prm);
@@ -79,6 +80,24 @@ namespace FoslsContact
                              "steps of a load path are solved on one mesh"));
 
       boundary_conditions.parse_components(geometry.dimension);
+
+      friction.parse_parameters(prm);
+      if (friction.enabled())
+        {
+          const std::string law =
+            "parameter 'Friction/Law' = " +
+            std::string(friction.law == Friction::Law::tresca ? "Tresca" : "Coulomb");
+          AssertThrow(!boundary_conditions.contact_ids.empty(),
+                      ExcMessage(law + " needs a contact boundary ('Boundary conditions/"
+                                       "Contact boundary ids'): friction acts on contact faces only"));
+          AssertThrow(geometry.dimension == 2,
+                      ExcMessage(law + " needs Dimension = 2: the isotropic friction "
+                                       "disc of a 3D contact is not built"));
+          AssertThrow(solver.type != Solver::Type::monotone_multigrid,
+                      ExcMessage(law + " needs 'Solver/Type' = active set or projected "
+                                       "gauss seidel: the monotone multigrid solves "
+                                       "frictionless contact only"));
+        }
     }
   } // namespace Parameters
 } // namespace FoslsContact

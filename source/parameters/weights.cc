@@ -27,7 +27,8 @@ namespace FoslsContact
                         "auto",
                         Patterns::Anything(),
                         "Weight of the complementarity term <u.n - g, (sigma n).n> "
-                        "(paper eq. 2): a number >= 0, or auto. Too large a value "
+                        "(paper eq. 2), and with friction of the friction term "
+                        "(doc/method.md section 7.7): a number >= 0, or auto. Too large a value "
                         "makes the problem indefinite, and where that limit lies "
                         "depends on the mesh; the program computes it on the "
                         "level of its definiteness check and refuses a number "

@@ -115,9 +115,31 @@ namespace FoslsContact
       add("Data/Body force", data.body_force, "in the body",
           "S/L (S = " + number(S) + ", L = " + number(L) + ")", scene.body_force(), false);
 
-    // not finite or too large: the line of the first process that has one
+    // (friction's bound or coefficient is no load: checked for the first
+    // two problems and its sign, not for the smallness of the data)
+    std::vector<Datum<dim>> friction;
+    if (scene.has_friction())
+      {
+        const bool tresca = scene.friction_law() == Parameters::Friction::Law::tresca;
+        friction.push_back({tresca ? "Friction/Bound" : "Friction/Coefficient",
+                            tresca ? parameters.friction.bound : parameters.friction.coefficient,
+                            "on the contact boundary",
+                            tresca ? stress : std::string("1"),
+                            scene.friction_data().record(),
+                            std::abs(scene.friction_data().scale()),
+                            false});
+      }
+
+    // not finite, too large or (friction) negative: the line of the first
+    // process that has one
     const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
     std::string        why   = local_problem(checked);
+    if (why.empty())
+      why = local_problem(friction);
+    if (why.empty() && !friction.empty() && friction[0].record.lowest < 0)
+      why = named(friction[0]) + " is negative (" + number(friction[0].record.lowest) + ") at " +
+            format(friction[0].record.lowest_at) + " " + friction[0].where +
+            ": a slip bound or a friction coefficient is >= 0";
     const unsigned int first =
       Utilities::MPI::min(why.empty() ? numbers::invalid_unsigned_int : rank, comm);
     if (first != numbers::invalid_unsigned_int)

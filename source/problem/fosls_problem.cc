@@ -126,8 +126,45 @@ namespace FoslsContact
     std::function<void()> release;
     if (!needs_fine_coupling_pattern(false))
       release = [this, L]() { discretization->release_coupling_pattern(L); };
-    FoslsAssembler<dim>(*discretization, parameters.weights).assemble(L, qp, release);
+    // (friction acts on the displacement relative to the step's start:
+    // the previous load step's solution, or the undeformed body)
+    LevelVector        reference;
+    const LevelVector *friction_reference = nullptr;
+    if (scene.has_friction() && step > 0 && load_path())
+      {
+        reference = carried;
+        update_ghosts(reference);
+        friction_reference = &reference;
+      }
+    FoslsAssembler<dim>(*discretization, parameters.weights, friction_reference)
+      .assemble(L, qp, release);
+    if (scene.has_friction())
+      set_friction(friction_reference);
     time_setup += wall.wall_time();
+  }
+
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::set_friction(const LevelVector *reference)
+  {
+    const unsigned int L = discretization->finest_level();
+    friction_law = std::make_unique<FrictionLaw<dim>>(scene,
+                                                      discretization->level(L),
+                                                      parameters.weights.c_compl);
+    LevelVector p(qp.partitioner);
+    if (reference != nullptr)
+      {
+        p.copy_locally_owned_data_from(*reference);
+        update_ghosts(p);
+        discretization->rotate_to_normal_tangential(L, p);
+      }
+    update_ghosts(p);
+    friction_law->set_reference(qp, p);
+    // (Coulomb: the pressure the step starts from, none on the
+    // undeformed body, whose first Tresca problem is frictionless)
+    slip_bounds = friction_law->slip_bounds(p);
+    friction_law->set_bounds(qp, slip_bounds);
   }
 
 
@@ -268,6 +305,34 @@ namespace FoslsContact
   void
   FoslsProblem<dim>::solve()
   {
+    run_solver();
+    fixed_point_iterations = 1;
+    if (scene.friction_law() == Parameters::Friction::Law::coulomb)
+      for (;;)
+        {
+          update_ghosts(solution);
+          const std::vector<double> s      = friction_law->slip_bounds(solution);
+          const double              change = friction_law->relative_change(slip_bounds, s);
+          pcout << "Coulomb fixed point: Tresca problem " << fixed_point_iterations
+                << ", the slip bounds of its solution differ by " << std::scientific
+                << std::setprecision(3) << change << std::defaultfloat
+                << " (relative to the largest)" << std::endl;
+          if (change <= parameters.friction.fixed_point_tolerance ||
+              fixed_point_iterations == parameters.friction.fixed_point_iterations)
+            break;
+          slip_bounds = s;
+          friction_law->set_bounds(qp, slip_bounds);
+          ++fixed_point_iterations;
+          run_solver();
+        }
+    report_solve();
+  }
+
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::run_solver()
+  {
     TimerOutput::Scope t(timer, "Solve");
     Timer              wall;
     monitor = std::make_unique<Monitor>(qp,
@@ -283,7 +348,13 @@ namespace FoslsContact
                            communication().values - before.values};
     if (parameters.solver.cross_check)
       cross_check(start);
+  }
 
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::report_solve()
+  {
     const KKTResidual kkt = qp.kkt_residual(solution);
     pcout << "KKT residuals: stationarity " << std::scientific
           << std::setprecision(3) << kkt.stationarity << ", feasibility "
@@ -354,7 +425,7 @@ namespace FoslsContact
       ", \"C_compl\": " + json_number(w.c_compl) +
       ", \"C_compl_auto\": " + (w.c_compl_auto ? "true" : "false") +
       ", \"C_compl_limit\": " + json_number(compl_limit) + "}";
-    Postprocessor<dim>   post(*discretization, parameters);
+    Postprocessor<dim>   post(*discretization, parameters, friction_terms());
     const LevelVector    cartesian = post.solution_in_scene_units(solution);
     // (the resultant of sigma n on every boundary id, once per step)
     const auto           forces    = post.boundary_forces(cartesian);
@@ -369,6 +440,8 @@ namespace FoslsContact
     const FieldMaxima     maxima = post.field_maxima(cartesian);
     const FunctionalValue J =
       run_summary.add_solution(summary, post, cartesian, force, *indicators, maxima);
+    if (scene.has_friction())
+      add_friction_summary(force);
 
     AdaptiveSteps::Step row;
     row.cells      = discretization->get_triangulation().n_global_active_cells();
@@ -471,8 +544,11 @@ namespace FoslsContact
     if (scene.has_contact())
       {
         // (gathered on the first process, which writes the table)
-        const auto             rows = ContactTable<dim>(*discretization).rows(solution);
+        const auto             rows = ContactTable<dim>(*discretization, friction_terms()).rows(solution);
         const ContactZone<dim> zone(rows);
+        row.friction = scene.has_friction();
+        if (row.friction)
+          std::tie(row.stick_vertices, row.slip_vertices) = LoadSteps<dim>::count_status(rows);
         row.contact_measure     = zone.measure();
         row.peak_pressure       = zone.peak_pressure();
         row.vertices_in_contact = zone.vertices_in_contact();
@@ -482,6 +558,37 @@ namespace FoslsContact
         });
       }
     load_steps.add(row);
+  }
+
+
+  template <int dim>
+  void
+  FoslsProblem<dim>::add_friction_summary(const Tensor<1, dim> &force)
+  {
+    // (the rows are gathered on the first process, which prints and
+    // writes summary.json)
+    typename LoadSteps<dim>::Step step;
+    step.force      = force;
+    const auto rows = ContactTable<dim>(*discretization, friction_terms()).rows(solution);
+    const double L  = scene.scaling().length;
+    LoadSteps<dim>::split_force(step, rows, [&](const Point<dim> &x) {
+      return scene.obstacle_normal(x / L);
+    });
+    const auto [stick, slip] = LoadSteps<dim>::count_status(rows);
+    const bool tresca        = scene.friction_law() == Parameters::Friction::Law::tresca;
+    pcout << "Friction (" << (tresca ? "Tresca" : "Coulomb") << "): " << stick << " stick and "
+          << slip << " slip vertices, normal force " << std::setprecision(8) << step.normal_force
+          << ", tangential force " << step.tangential_force;
+    if (!tresca)
+      pcout << ", " << fixed_point_iterations << " Tresca problems";
+    pcout << std::defaultfloat << std::endl;
+    summary["friction"] = std::string("{\"law\": \"") + (tresca ? "Tresca" : "Coulomb") +
+                          "\", \"stick_vertices\": " + std::to_string(stick) +
+                          ", \"slip_vertices\": " + std::to_string(slip) +
+                          ", \"normal_force\": " + json_number(step.normal_force) +
+                          ", \"tangential_force\": " + json_number(step.tangential_force) +
+                          ", \"fixed_point_iterations\": " +
+                          std::to_string(fixed_point_iterations) + "}";
   }
 
 
@@ -632,7 +739,7 @@ namespace FoslsContact
         summary["load_steps"]         = load_steps.json();
         extra_files["load_steps.csv"] = load_steps.csv();
       }
-    Postprocessor<dim>(*discretization, parameters)
+    Postprocessor<dim>(*discretization, parameters, friction_terms())
       .write(solution, *monitor, summary, used_parameters, extra_files, output);
     pcout << "Output written to " << parameters.output.directory << "/" << std::endl;
   }
@@ -665,7 +772,7 @@ namespace FoslsContact
         summary["adaptive_stop"]     = "\"" + adaptive_stop + "\"";
         tables["adaptive_steps.csv"] = steps.csv();
       }
-    Postprocessor<dim>(*discretization, parameters)
+    Postprocessor<dim>(*discretization, parameters, friction_terms())
       .write(finished->contact_table,
              finished->convergence,
              summary,

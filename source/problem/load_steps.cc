@@ -31,8 +31,11 @@ namespace FoslsContact
              << (dim == 2 ? "contact_width" : "contact_area")
              << "\": " << json_number(step.contact_measure)
              << ", \"peak_pressure\": " << json_number(step.peak_pressure)
-             << ", \"vertices_in_contact\": " << step.vertices_in_contact
-             << ", \"reactions\": {";
+             << ", \"vertices_in_contact\": " << step.vertices_in_contact;
+        if (step.friction)
+          item << ", \"stick_vertices\": " << step.stick_vertices
+               << ", \"slip_vertices\": " << step.slip_vertices;
+        item << ", \"reactions\": {";
         first = true;
         for (const auto &[id, force] : step.reactions)
           {
@@ -63,6 +66,8 @@ namespace FoslsContact
       out << ",force_" << xyz[d];
     out << ",normal_force,tangential_force," << (dim == 2 ? "contact_width" : "contact_area")
         << ",peak_pressure,vertices_in_contact";
+    if (steps[0].friction)
+      out << ",stick_vertices,slip_vertices";
     for (const auto &reaction : steps[0].reactions)
       for (unsigned int d = 0; d < dim; ++d)
         out << ",reaction_" << static_cast<unsigned int>(reaction.first) << '_' << xyz[d];
@@ -80,12 +85,28 @@ namespace FoslsContact
         out << ',' << step.normal_force << ',' << step.tangential_force << ','
             << step.contact_measure << ',' << step.peak_pressure << ','
             << step.vertices_in_contact;
+        if (step.friction)
+          out << ',' << step.stick_vertices << ',' << step.slip_vertices;
         for (const auto &reaction : step.reactions)
           for (unsigned int d = 0; d < dim; ++d)
             out << ',' << reaction.second[d];
         out << '\n';
       }
     return out.str();
+  }
+
+
+  template <int dim>
+  std::pair<unsigned int, unsigned int>
+  LoadSteps<dim>::count_status(const std::vector<typename ContactRow<dim>::Values> &rows)
+  {
+    std::pair<unsigned int, unsigned int> counts{0, 0};
+    for (const auto &row : rows)
+      {
+        counts.first += row[ContactRow<dim>::status] == 1;
+        counts.second += row[ContactRow<dim>::status] == 2;
+      }
+    return counts;
   }
 
 

@@ -31,6 +31,22 @@ namespace FoslsContact
     upper_bounds = level.upper_bounds;
     update_ghosts(fixed_values);
     update_ghosts(upper_bounds);
+    // (FrictionLaw sets them for the friction law of the scene)
+    friction = FrictionTerms();
+  }
+
+
+  double
+  ConstrainedQP::friction_term(const LevelVector &x) const
+  {
+    if (!has_friction())
+      return 0;
+    double term = 0;
+    for (unsigned int i = 0; i < n_owned(); ++i)
+      if (role[i] == DoFRole::slip)
+        term += friction.slip_weights.local_element(i) *
+                std::abs(x.local_element(i) - friction.slip_references.local_element(i));
+    return Utilities::MPI::sum(term, get_communicator());
   }
 
 
@@ -52,7 +68,7 @@ namespace FoslsContact
   double
   ConstrainedQP::value(const LevelVector &x) const
   {
-    return accurate_quadratic(matrix, x, rhs, constant);
+    return accurate_quadratic(matrix, x, rhs, constant) + friction_term(x);
   }
 
 
@@ -69,7 +85,9 @@ namespace FoslsContact
     FunctionalValue v;
     v.total = total;
     v.eq    = accurate_quadratic(matrix_eq, x, rhs_eq, constant_eq);
-    v.complementarity = accurate_quadratic(matrix_compl, x, rhs_compl, 0.);
+    // (with friction: the tangential term's bilinear part is in
+    // matrix_compl, its |u_t - p_t| part is friction_term())
+    v.complementarity = accurate_quadratic(matrix_compl, x, rhs_compl, 0.) + friction_term(x);
     v.constitutive    = v.total - v.eq - v.complementarity;
     return v;
   }
@@ -85,6 +103,11 @@ namespace FoslsContact
         x.local_element(i) = fixed(i);
       else if (role[i] == DoFRole::bounded)
         x.local_element(i) = std::min(x.local_element(i), ub(i));
+      else if (role[i] == DoFRole::traction && has_friction())
+        {
+          const double s = friction.traction_bounds.local_element(i);
+          x.local_element(i) = std::max(-s, std::min(x.local_element(i), s));
+        }
   }
 
 
@@ -97,6 +120,9 @@ namespace FoslsContact
         v = std::max(v, std::abs(x.local_element(i) - fixed_values.local_element(i)));
       else if (role[i] == DoFRole::bounded)
         v = std::max(v, x.local_element(i) - upper_bounds.local_element(i));
+      else if (role[i] == DoFRole::traction && has_friction())
+        v = std::max(v,
+                     std::abs(x.local_element(i)) - friction.traction_bounds.local_element(i));
     return Utilities::MPI::max(v, get_communicator());
   }
 
@@ -179,6 +205,40 @@ namespace FoslsContact
                   std::max(r.feasibility, std::max(0., xi - ub) / bound_scale);
                 r.complementarity =
                   std::max(r.complementarity, mu * std::abs(ub - xi) / bound_scale);
+                break;
+              }
+            case DoFRole::traction:
+              if (!has_friction())
+                {
+                  r.stationarity = std::max(r.stationarity, std::abs(gi));
+                  break;
+                }
+              {
+                // -s <= x_i <= s: a multiplier of either sign, each of
+                // which must vanish away from its bound
+                const double s = friction.traction_bounds.local_element(i);
+                r.feasibility  = std::max(r.feasibility, std::max(0., std::abs(xi) - s) / bound_scale);
+                r.complementarity =
+                  std::max({r.complementarity,
+                            std::max(0., -gi) * std::abs(s - xi) / bound_scale,
+                            std::max(0., gi) * std::abs(xi + s) / bound_scale});
+                break;
+              }
+            case DoFRole::slip:
+              if (!has_friction())
+                {
+                  r.stationarity = std::max(r.stationarity, std::abs(gi));
+                  break;
+                }
+              {
+                // 0 in g_i + w_i d|x_i - p_i|: g_i = -w_i sign(x_i - p_i), or
+                // |g_i| <= w_i at x_i = p_i
+                const double w = friction.slip_weights.local_element(i);
+                const double d = xi - friction.slip_references.local_element(i);
+                r.stationarity = std::max(r.stationarity,
+                                          d > 0 ? std::abs(gi + w) :
+                                          d < 0 ? std::abs(gi - w) :
+                                                  std::max(0., std::abs(gi) - w));
                 break;
               }
           }
@@ -275,7 +335,9 @@ namespace FoslsContact
       d_norm_square += t;
 
     IterateMeasures m;
-    m.functional = parts_with_total(x, accurate_total(value, get_communicator(), constant));
+    m.functional = parts_with_total(x,
+                                    accurate_total(value, get_communicator(), constant) +
+                                      friction_term(x));
     m.correction =
       std::sqrt(std::max(0., Utilities::MPI::sum(d_norm_square, get_communicator())));
     m.round_off = round_off_from(round_off, x.size());
@@ -292,7 +354,10 @@ namespace FoslsContact
            matrix_compl.memory_consumption() + sparsity_compl.memory_consumption() +
            rhs.memory_consumption() + rhs_eq.memory_consumption() +
            rhs_compl.memory_consumption() + role.capacity() * sizeof(DoFRole) +
-           fixed_values.memory_consumption() + upper_bounds.memory_consumption();
+           fixed_values.memory_consumption() + upper_bounds.memory_consumption() +
+           friction.traction_bounds.memory_consumption() +
+           friction.slip_weights.memory_consumption() +
+           friction.slip_references.memory_consumption();
   }
 
 } // namespace FoslsContact

@@ -122,7 +122,10 @@ namespace FoslsContact
     const auto        n = qp.size();
     std::vector<types::global_dof_index> contact;
     for (types::global_dof_index i = 0; i < n; ++i)
-      if (qp.role[i] == DoFRole::bounded)
+      // (with friction the complementarity term couples the tangential
+      // tractions and displacements of the contact boundary too)
+      if (qp.role[i] == DoFRole::bounded || qp.role[i] == DoFRole::traction ||
+          qp.role[i] == DoFRole::slip)
         contact.push_back(i);
     result.n_contact_dofs = contact.size();
     if (contact.empty())

@@ -150,6 +150,11 @@ namespace FoslsContact
     const auto role_parts = collect(owned_roles(qp.role, p.locally_owned_size()));
     const LevelVector b = gather(qp.rhs), fixed = gather(qp.fixed_values),
                       ub = gather(qp.upper_bounds);
+    FrictionTerms friction;
+    if (qp.has_friction())
+      friction = {gather(qp.friction.traction_bounds),
+                  gather(qp.friction.slip_weights),
+                  gather(qp.friction.slip_references)};
     // (an error of the holder alone, its memory, stops every process)
     CollectiveError::run(comm, [&]() {
       if (!holder)
@@ -162,6 +167,7 @@ namespace FoslsContact
       serial.rhs               = b;
       serial.fixed_values      = fixed;
       serial.upper_bounds      = ub;
+      serial.friction          = friction;
       serial.constant          = qp.constant;
       serial.dimension         = qp.dimension;
       serial.role              = gathered_roles(role_parts);

@@ -189,6 +189,11 @@ namespace FoslsContact
         gap_function    = make_function(data.gap, 1, "Data/Gap");
         normal_function = make_function(data.obstacle_normal, dim, "Data/Obstacle normal");
       }
+    // (Tresca's bound or Coulomb's coefficient: the one the law reads)
+    if (prm.friction.law == Parameters::Friction::Law::tresca)
+      friction_function = make_function(prm.friction.bound, 1, "Friction/Bound");
+    else if (prm.friction.law == Parameters::Friction::Law::coulomb)
+      friction_function = make_function(prm.friction.coefficient, 1, "Friction/Coefficient");
     if (!Utilities::trim(data.exact_displacement).empty())
       exact_u_function =
         make_function(data.exact_displacement, dim, "Data/Exact displacement");
@@ -211,6 +216,10 @@ namespace FoslsContact
     traction_scaled   = scaled(traction_function, 1. / S);
     gap_scaled        = scaled(gap_function, 1. / L);
     initial_u_scaled  = scaled(initial_u_function, 1. / L);
+    // (a bound is a stress, a coefficient a number)
+    friction_scaled = scaled(friction_function,
+                             prm.friction.law == Parameters::Friction::Law::tresca ? 1. / S : 1.);
+    friction = prm.friction.law;
   }
 
 

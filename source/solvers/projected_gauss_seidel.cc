@@ -39,16 +39,37 @@ namespace FoslsContact
                 double r = qp.rhs.local_element(i);
                 for (auto e = A.begin(i); e != A.end(i); ++e)
                   r -= e->value() * whole.local_element(e->column());
-                double xi = whole.local_element(i) + r / a_ii;
+                const double x_old_i = whole.local_element(i);
+                double       xi      = x_old_i + r / a_ii;
+                // the friction term's change along e_i (a slip DoF: the
+                // minimizer of a_ii d^2 / 2 - r d + w |x_i + d - p_i| is
+                // the unconstrained one moved toward p_i by w / a_ii, or p_i)
+                double friction_change = 0, friction_size = 0;
                 if (qp.role[i] == DoFRole::bounded)
                   xi = std::min(xi, qp.upper_bounds.local_element(i));
-                // the change of J along e_i, -r d + a_ii d^2 / 2, is <= 0 up
-                // to round-off relative to its own terms (evaluating J
-                // itself would compare numbers with far larger cancellation
-                // errors)
-                const double d      = xi - whole.local_element(i);
-                const double change = -r * d + 0.5 * a_ii * d * d;
-                if (increases_energy(change, std::abs(r * d) + 0.5 * a_ii * d * d))
+                // (a problem without friction terms whose roles have them,
+                // a level of nested iteration: those DoFs are free)
+                else if (qp.role[i] == DoFRole::traction && qp.has_friction())
+                  {
+                    const double s = qp.friction.traction_bounds.local_element(i);
+                    xi             = std::max(-s, std::min(xi, s));
+                  }
+                else if (qp.role[i] == DoFRole::slip && qp.has_friction())
+                  {
+                    const double w = qp.friction.slip_weights.local_element(i);
+                    const double p = qp.friction.slip_references.local_element(i);
+                    const double z = xi - p, shrink = w / a_ii;
+                    xi             = z > shrink ? xi - shrink : z < -shrink ? xi + shrink : p;
+                    friction_change = w * (std::abs(xi - p) - std::abs(x_old_i - p));
+                    friction_size   = w * (std::abs(xi - p) + std::abs(x_old_i - p));
+                  }
+                // the change of J along e_i, -r d + a_ii d^2 / 2 (plus the
+                // friction term's), is <= 0 up to round-off relative to its
+                // own terms (evaluating J itself would compare numbers with
+                // far larger cancellation errors)
+                const double d      = xi - x_old_i;
+                const double change = -r * d + 0.5 * a_ii * d * d + friction_change;
+                if (increases_energy(change, std::abs(r * d) + 0.5 * a_ii * d * d + friction_size))
                   ++increases;
                 whole.local_element(i) = xi;
               }

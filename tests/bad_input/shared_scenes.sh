@@ -21,3 +21,6 @@ cube_file=("$tests/scenes/cube3d.prm" --set "Geometry/Shape=file" "${clamped[@]}
 two_parts=("$square" --set "Geometry/Shape=file" --set "Geometry/Levels=3"
            --set "Boundary conditions/Dirichlet boundary ids=1"
            --set "Boundary conditions/Neumann boundary ids=0")
+# the square with friction, solved by the active set method (the law and
+# its data given by the test)
+friction=("$square" --set "Solver/Type=active set")

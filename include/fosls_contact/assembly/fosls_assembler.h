@@ -22,6 +22,10 @@ namespace FoslsContact
    *   J(u, sigma) = C_eq ||div sigma + f||^2 + C_const ||A sigma - eps(u)||^2
    *               + C_compl <u.n - g, (sigma n).n>_{Gamma_C},
    *
+   * with friction plus the bilinear part of the friction term (the same
+   * weight, friction_terms(); its |u_t - p_t| part is no quadratic: it is
+   * ConstrainedQP::FrictionTerms),
+   *
    * on one level, directly in the normal-tangential basis: the local matrix
    * of a cell that touches a rotated vertex or face is transformed as
    * R^T K R before it is added, so the global matrix never needs a
@@ -40,8 +44,14 @@ namespace FoslsContact
   class FoslsAssembler
   {
   public:
+    /**
+     * With friction, @p friction_reference is the displacement the load
+     * step starts from (Cartesian, with ghost values; null: the undeformed
+     * body): the friction term acts on the displacement relative to it.
+     */
     FoslsAssembler(const Discretization<dim> &discretization,
-                   const Parameters::Weights &weights);
+                   const Parameters::Weights &weights,
+                   const LevelVector *        friction_reference = nullptr);
 
     /**
      * Fill @p qp (sized with ConstrainedQP::reinit) on level @p level;
@@ -83,6 +93,16 @@ namespace FoslsContact
                        AssemblyScratch<dim> &                           scratch,
                        AssemblyCopy &                                   copy) const;
 
+    /**
+     * With friction: the bilinear part of the friction term on the contact
+     * face @p f of @p cell (whose face values @p scratch holds), added to
+     * the complementarity part, and its part at the reference displacement.
+     */
+    void friction_terms(const typename Triangulation<dim>::cell_iterator &cell,
+                        const unsigned int                               f,
+                        AssemblyScratch<dim> &                           scratch,
+                        AssemblyCopy &                                   copy) const;
+
     /** The cell's terms in the normal-tangential basis: R^T K R, R^T r. */
     void rotate(const LevelData<dim> &data, AssemblyCopy &copy) const;
 
@@ -111,6 +131,7 @@ namespace FoslsContact
      * cell terms neither evaluate nor multiply.
      */
     std::vector<int> stress_row;
+    const LevelVector *friction_reference;
   };
 } // namespace FoslsContact
 

@@ -49,6 +49,8 @@ namespace FoslsContact
         Tensor<1, dim>                           normal;
         /** The face's area and the mean normal component of its RT basis function. */
         double area, c;
+        /** Its vertices (indices of the triangulation). */
+        std::array<unsigned int, GeometryInfo<dim>::vertices_per_face> vertices;
       };
       std::vector<ContactFaceData> contact_faces;
     };
@@ -73,9 +75,13 @@ namespace FoslsContact
      */
     void check_obstacle_normal(const Point<dim> &p, const Tensor<1, dim> &outward) const;
 
-    /** A contact face: tangential tractions 0, the normal one <= 0. */
+    /**
+     * A contact face: the normal traction <= 0, the tangential ones 0, or
+     * with @p friction bounded by the slip bound (DoFRole::traction).
+     */
     static void bound_contact_face(LevelData<dim> &                                data,
-                                   const std::array<types::global_dof_index, dim> &face_rt);
+                                   const std::array<types::global_dof_index, dim> &face_rt,
+                                   const bool                                      friction);
 
     const Scene<dim> &     scene;
     const Mapping<dim> &   mapping;

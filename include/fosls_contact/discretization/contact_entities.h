@@ -42,6 +42,11 @@ namespace FoslsContact
      * the roles of its ghost DoFs are those of their owners.
      */
     void add_rotations(LevelData<dim> &data, const BoundaryData &boundary) const;
+    /**
+     * With friction: the contact faces of @p data with their slip DoFs
+     * (LevelData::friction_faces), after add_rotations().
+     */
+    void add_friction_faces(LevelData<dim> &data, const BoundaryData &boundary) const;
 
   private:
     /**

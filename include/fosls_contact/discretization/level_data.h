@@ -74,6 +74,24 @@ namespace FoslsContact
   };
 
   /**
+   * With friction (Friction/Law): a contact face and what the friction
+   * terms of J need of it (FrictionLaw): its tangential traction DoFs and
+   * its normal one (rotated coordinates, local indices), the weight
+   * |F| / 2^(dim-1) of each of its vertices in the trapezoidal rule, its
+   * center, and the tangential displacement DoFs (DoFRole::slip) of its
+   * vertices that have them.
+   */
+  template <int dim>
+  struct FrictionFace
+  {
+    std::array<types::global_dof_index, dim - 1>              traction;
+    types::global_dof_index                                   normal;
+    double                                                    weight;
+    Point<dim>                                                center;
+    std::vector<std::array<types::global_dof_index, dim - 1>> slips;
+  };
+
+  /**
    * One level of the discretization on this process: the algebra's view
    * of it (AlgebraicLevel: the DoFs it owns and its ghost DoFs, those of
    * the ghost cells around its own cells, their roles, fixed values and
@@ -150,6 +168,8 @@ namespace FoslsContact
     /** The contact vertices and faces of the cells of this process. */
     std::vector<ContactVertex<dim>>         contact_vertices;
     std::vector<ContactFace<dim>>           contact_faces;
+    /** With friction: the contact faces of the cells here (else empty). */
+    std::vector<FrictionFace<dim>>          friction_faces;
     /**
      * An index of the triangulation (of a vertex or a face) -> the dim DoFs
      * there, for the cells here; local indices. A sorted array: the

@@ -48,15 +48,23 @@ namespace FoslsContact
        * vertex index; kept by reference.
        */
       Fields(const Scene<dim> &                                              scene,
-             const std::map<unsigned int, typename ContactRow<dim>::Values> &rows);
+             const std::map<unsigned int, typename ContactRow<dim>::Values> &rows,
+             const bool                                                      friction);
       void evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
                                  std::vector<Vector<double>> &computed) const override;
+      /**
+       * With friction also the rows' slip and tangential_traction (vectors)
+       * and friction_status (ContactRow).
+       */
       std::vector<std::string> get_names() const override;
-      UpdateFlags              get_needed_update_flags() const override;
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>
+                  get_data_component_interpretation() const override;
+      UpdateFlags get_needed_update_flags() const override;
 
     private:
       const Scene<dim> &                                              scene;
       const std::map<unsigned int, typename ContactRow<dim>::Values> &rows;
+      const bool                                                      friction;
     };
 
   private:

@@ -2,6 +2,7 @@
 #define fosls_contact_output_contact_table_h
 
 #include <fosls_contact/discretization/discretization.h>
+#include <fosls_contact/qp/constrained_qp.h>
 
 #include <array>
 #include <map>
@@ -33,7 +34,18 @@ namespace FoslsContact
      */
     static constexpr unsigned int share      = 2 * dim + 4;
     static constexpr unsigned int in_contact = 2 * dim + 5; ///< 1 in contact, else 0
-    static constexpr unsigned int size       = 2 * dim + 6;
+    /**
+     * With friction (else 0): the tangential displacement of the load step
+     * (u_t - p_t, relative to the displacement it starts from: what
+     * friction resists), Cartesian (dim); the tangential traction on the
+     * body, the mean over the contact faces at the vertex (dim); and the
+     * status: 0 separated, 1 stick (no slip in the step, or a tangential
+     * displacement prescribed), 2 slip.
+     */
+    static constexpr unsigned int slip       = 2 * dim + 6;
+    static constexpr unsigned int traction_t = 3 * dim + 6;
+    static constexpr unsigned int status     = 4 * dim + 6;
+    static constexpr unsigned int size       = 4 * dim + 7;
     using Values                           = std::array<double, size>;
   };
 
@@ -50,7 +62,12 @@ namespace FoslsContact
   class ContactTable
   {
   public:
-    explicit ContactTable(const Discretization<dim> &discretization);
+    /**
+     * With @p friction (the problem's friction terms) the rows have the
+     * friction columns too.
+     */
+    explicit ContactTable(const Discretization<dim> &discretization,
+                          const FrictionTerms *      friction = nullptr);
 
     /**
      * One row per contact vertex of the finest level, sorted by position,
@@ -82,7 +99,15 @@ namespace FoslsContact
     static bool in_contact(const double u_n, const double gap);
 
   private:
+    /**
+     * The friction columns of the rows @p rows (by vertex index) at
+     * @p x (rotated, its local elements @p x_local).
+     */
+    void add_friction(const LocalElements &                          x_local,
+                      std::map<unsigned int, typename ContactRow<dim>::Values> &rows) const;
+
     const Discretization<dim> &discretization;
+    const FrictionTerms *      friction;
   };
 } // namespace FoslsContact
 

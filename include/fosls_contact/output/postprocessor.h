@@ -73,8 +73,13 @@ namespace FoslsContact
   class Postprocessor
   {
   public:
-    Postprocessor(const Discretization<dim> &   discretization,
-                  const Parameters::AllParameters &parameters);
+    /**
+     * With @p friction (the problem's friction terms), contact.csv and
+     * the contact surface have the friction columns (ContactRow).
+     */
+    Postprocessor(const Discretization<dim> &      discretization,
+                  const Parameters::AllParameters &parameters,
+                  const FrictionTerms *            friction = nullptr);
 
     /**
      * Solution (finest level, rotated basis, dimensionless) -> Cartesian
@@ -169,6 +174,7 @@ namespace FoslsContact
     const Parameters::AllParameters parameters;
     const ReferenceScales           scaling;
     const PhysicalMapping<dim>      mapping;
+    const FrictionTerms *           friction;
   };
 } // namespace FoslsContact
 

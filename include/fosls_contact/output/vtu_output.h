@@ -5,6 +5,7 @@
 #include <fosls_contact/discretization/discretization.h>
 #include <fosls_contact/output/output_directory.h>
 #include <fosls_contact/parameters/parameters.h>
+#include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/scene/physical_mapping.h>
 
 #include <string>
@@ -22,9 +23,11 @@ namespace FoslsContact
   class VtuOutput
   {
   public:
+    /** With @p friction, the contact surface shows the friction fields. */
     VtuOutput(const Discretization<dim> &   discretization,
               const Parameters::Material &  material,
-              const PhysicalMapping<dim> &  mapping);
+              const PhysicalMapping<dim> &  mapping,
+              const FrictionTerms *         friction = nullptr);
 
     /**
      * The solution's VTU piece of this process (the fields of
@@ -57,6 +60,7 @@ namespace FoslsContact
     const Parameters::Material &material;
     const ReferenceScales &     scaling;
     const PhysicalMapping<dim> &mapping;
+    const FrictionTerms *       friction;
   };
 } // namespace FoslsContact
 

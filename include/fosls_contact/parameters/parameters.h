@@ -4,6 +4,7 @@
 #include <fosls_contact/parameters/adaptivity.h>
 #include <fosls_contact/parameters/boundary_conditions.h>
 #include <fosls_contact/parameters/data.h>
+#include <fosls_contact/parameters/friction.h>
 #include <fosls_contact/parameters/geometry.h>
 #include <fosls_contact/parameters/hertz_comparison.h>
 #include <fosls_contact/parameters/material.h>
@@ -44,6 +45,7 @@ namespace FoslsContact
       Weights            weights;
       Data               data;
       BoundaryConditions boundary_conditions;
+      Friction           friction;
       Solver             solver;
       Output             output;
       HertzComparison    hertz;

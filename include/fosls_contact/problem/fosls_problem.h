@@ -11,6 +11,7 @@
 #include <fosls_contact/output/postprocessor.h>
 #include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/problem/adaptive_steps.h>
+#include <fosls_contact/problem/friction_law.h>
 #include <fosls_contact/problem/load_steps.h>
 #include <fosls_contact/problem/run_summary.h>
 #include <fosls_contact/qp/constrained_qp.h>
@@ -96,7 +97,33 @@ namespace FoslsContact
      * cross_check_solution).
      */
     void cross_check(const LevelVector &start);
+    /**
+     * The solve of the step: one problem, or with Coulomb friction the
+     * fixed point of Tresca problems (slip bounds f times the pressure of
+     * the last solution) to Friction/Fixed point tolerance.
+     */
     void solve();
+    /** One run of the solver on qp from solution (and the cross check). */
+    void run_solver();
+    /** The KKT residuals and the end of the solve, printed. */
+    void report_solve();
+    /**
+     * With friction: the friction terms of the assembled qp, relative to
+     * @p reference (the step's starting displacement, Cartesian with
+     * ghost values; null: the undeformed body).
+     */
+    void set_friction(const LevelVector *reference);
+    /**
+     * With friction: the stick and slip vertices and the normal and
+     * tangential contact force (@p force split along the obstacle normal),
+     * printed and in summary.json ("friction").
+     */
+    void add_friction_summary(const Tensor<1, dim> &force);
+    /** The problem's friction terms, or null without friction (for the output). */
+    const FrictionTerms *friction_terms() const
+    {
+      return qp.has_friction() ? &qp.friction : nullptr;
+    }
     /**
      * The figures of this step's solution (summary.json's fields, printed
      * as well), its error indicators and its VTU files; a row of the step
@@ -190,6 +217,11 @@ namespace FoslsContact
      * step's data, Cartesian, for start_load_step().
      */
     LevelVector                          load_step_guess;
+    /** With friction: the law and the slip bounds of the friction faces. */
+    std::unique_ptr<FrictionLaw<dim>>    friction_law;
+    std::vector<double>                  slip_bounds;
+    /** Coulomb: the Tresca problems of the step's fixed point. */
+    unsigned int                         fixed_point_iterations = 0;
     /** The rows of a load path (Data/Load steps), one per step. */
     LoadSteps<dim>                       load_steps;
     /** The step of the adaptive loop (0: the first, uniform mesh). */

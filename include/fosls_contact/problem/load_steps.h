@@ -44,6 +44,12 @@ namespace FoslsContact
       /** The contact zone (ContactZone): width or area, peak pressure. */
       double                        contact_measure = 0, peak_pressure = 0;
       unsigned int                  vertices_in_contact = 0;
+      /**
+       * With friction: the contact vertices that stick and that slip in
+       * the step (ContactRow::status), columns of the table only then.
+       */
+      bool                          friction = false;
+      unsigned int                  stick_vertices = 0, slip_vertices = 0;
       /** The force on the body at each Dirichlet boundary id (the reaction). */
       std::map<types::boundary_id, Tensor<1, dim>> reactions;
     };
@@ -54,6 +60,13 @@ namespace FoslsContact
      * leave both 0), with the obstacle normal @p normal at a position
      * in the scene's units.
      */
+    /**
+     * The numbers of stick and slip vertices of the contact table @p rows
+     * with its friction columns (ContactRow::status).
+     */
+    static std::pair<unsigned int, unsigned int>
+    count_status(const std::vector<typename ContactRow<dim>::Values> &rows);
+
     template <typename Normal>
     static void split_force(Step &                                               step,
                             const std::vector<typename ContactRow<dim>::Values> &rows,

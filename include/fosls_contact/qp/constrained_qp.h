@@ -48,10 +48,27 @@ namespace FoslsContact
   };
 
   /**
+   * The friction terms of J (Friction/Law, doc/method.md section 7.7): a
+   * DoF of role traction (a tangential contact traction) is bounded by
+   * |x_i| <= traction_bounds_i (the slip bound s of its face), and a DoF
+   * of role slip (a tangential displacement of a contact vertex) adds
+   * slip_weights_i |x_i - slip_references_i| to J: C_compl s |u_t - p_t|
+   * by the trapezoidal rule, with p the displacement the step starts
+   * from. The vectors are empty without friction.
+   */
+  struct FrictionTerms
+  {
+    LevelVector traction_bounds, slip_weights, slip_references;
+  };
+
+  /**
    * The seam of the program: a box-constrained quadratic problem
    *
    *   minimize J(x) = 1/2 x^T A x - b^T x + c
    *   subject to x_i = fixed_i (role fixed), x_i <= ub_i (role bounded),
+   *
+   * and, with friction (FrictionTerms), |x_i| <= s_i (role traction) and
+   * the term sum_i w_i |x_i - p_i| in J (role slip),
    *
    * in the normal-tangential basis (paper section 4.3), so that every
    * contact constraint bounds one DoF. J is the least-squares functional
@@ -123,6 +140,13 @@ namespace FoslsContact
     /** With their ghost values. */
     LevelVector          fixed_values;
     LevelVector          upper_bounds;
+    /** With their ghost values; set by FrictionLaw. */
+    FrictionTerms        friction;
+
+    /** Whether J has friction terms (collective: the same on every process). */
+    bool has_friction() const { return friction.traction_bounds.size() > 0; }
+    /** The friction term sum_i w_i |x_i - p_i| of J (0 without friction). Collective. */
+    double friction_term(const LevelVector &x) const;
 
     /**
      * Size A on the level's coupling pattern and copy its roles, fixed
@@ -158,8 +182,9 @@ namespace FoslsContact
     /** J(x) and its parts. */
     FunctionalValue parts(const LevelVector &x) const;
     /**
-     * Set fixed DoFs to their values and cut bounded DoFs at their bound
-     * (all local entries: with valid ghost values in, valid ones out).
+     * Set fixed DoFs to their values and cut bounded DoFs at their bound,
+     * tractions at their slip bounds (all local entries: with valid ghost
+     * values in, valid ones out).
      */
     void project_to_feasible(LevelVector &x) const;
     /** Largest violation of a bound or of a fixed value. */

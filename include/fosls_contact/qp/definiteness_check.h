@@ -13,7 +13,8 @@ namespace FoslsContact
    *
    * Only the complementarity term can spoil definiteness (paper section 3
    * and 7), and it couples only the contact normal DoFs C (the bounded
-   * ones). With I the other non-fixed DoFs, A is positive definite iff
+   * ones; with friction the tangential ones of the contact boundary as
+   * well, DoFRole::traction and DoFRole::slip). With I the other non-fixed DoFs, A is positive definite iff
    * A_II is (it is: plain FOSLS with a Dirichlet part) and the Schur
    * complement S = A_CC - A_CI A_II^{-1} A_IC is. S is small and dense:
    * it costs one sparse Cholesky factorization of A_II (SparseCholesky,

@@ -12,8 +12,18 @@ namespace FoslsContact
   enum class DoFRole : unsigned char
   {
     free,    ///< unconstrained
-    fixed,   ///< Dirichlet u, Neumann sigma n, tangential contact traction
+    fixed,   ///< Dirichlet u, Neumann sigma n, frictionless tangential traction
     bounded, ///< contact: normal displacement <= g or normal stress <= 0
+    /**
+     * friction: a tangential contact traction, |x_i| <= its slip bound
+     * (ConstrainedQP::FrictionTerms)
+     */
+    traction,
+    /**
+     * friction: a tangential displacement of a contact vertex, with the
+     * term w_i |x_i - p_i| in J (ConstrainedQP::FrictionTerms)
+     */
+    slip,
   };
 } // namespace FoslsContact
 

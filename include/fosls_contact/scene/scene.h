@@ -70,6 +70,9 @@ namespace FoslsContact
     bool has_contact() const { return !contact_ids.empty(); }
     bool has_body_force() const { return body_force_function != nullptr; }
     bool has_exact_solution() const { return exact_u_function != nullptr; }
+    /** The friction law (Friction/Law); none: frictionless contact. */
+    Parameters::Friction::Law friction_law() const { return friction; }
+    bool has_friction() const { return friction != Parameters::Friction::Law::none; }
 
     bool is_dirichlet(const types::boundary_id id) const;
     bool is_neumann(const types::boundary_id id) const;
@@ -85,6 +88,11 @@ namespace FoslsContact
     const ScaledFunction<dim> &dirichlet_values() const { return *dirichlet_scaled; }
     const ScaledFunction<dim> &traction() const { return *traction_scaled; }
     const ScaledFunction<dim> &gap() const { return *gap_scaled; }
+    /**
+     * With friction: Tresca's slip bound s (dimensionless, a stress) or
+     * Coulomb's coefficient f, by friction_law().
+     */
+    const ScaledFunction<dim> &friction_data() const { return *friction_scaled; }
     /** The unit obstacle normal at the dimensionless point @p p. */
     Tensor<1, dim> obstacle_normal(const Point<dim> &p) const;
     /** Initial displacement expression, or null. */
@@ -163,9 +171,11 @@ namespace FoslsContact
     std::unique_ptr<FunctionParser<dim>> exact_u_function;
     std::unique_ptr<FunctionParser<dim>> exact_sigma_function;
     std::unique_ptr<FunctionParser<dim>> initial_u_function;
+    std::unique_ptr<FunctionParser<dim>> friction_function;
+    Parameters::Friction::Law            friction = Parameters::Friction::Law::none;
 
     std::unique_ptr<ScaledFunction<dim>> body_force_scaled, dirichlet_scaled,
-      traction_scaled, gap_scaled, initial_u_scaled;
+      traction_scaled, gap_scaled, initial_u_scaled, friction_scaled;
   };
 } // namespace FoslsContact
 

@@ -19,7 +19,11 @@ namespace FoslsContact
    * mu_i + c_i (x_i - ub_i) > 0, uses c_i = A_ii so that it is invariant to
    * the scaling of the DoFs. Distributed like the problem: every process
    * tests its own DoFs, the direct solver factorizes the distributed
-   * matrix (SparseDirectSolver).
+   * matrix (SparseDirectSolver). With friction (ConstrainedQP::FrictionTerms)
+   * the tangential tractions are held at either slip bound and the slip
+   * DoFs stick or slip by the same kind of test (iterate()): the
+   * semismooth Newton method of frictional contact, the reference of
+   * friction.
    */
   class ActiveSetDirect : public QPSolver
   {
@@ -59,6 +63,8 @@ namespace FoslsContact
       const std::vector<DoFRole> &role;
       const LevelVector &         ub;
       const SparsityPattern *     factorization_pattern;
+      /** The friction terms, or null (ConstrainedQP::FrictionTerms). */
+      const FrictionTerms *       friction;
     };
 
     /**

@@ -9,7 +9,11 @@ namespace FoslsContact
    * Projected Gauss-Seidel (coordinate descent with projection): the
    * classic baseline whose rate deteriorates as h -> 0 (paper section 4.2).
    * Each coordinate step minimizes J exactly along e_i within the bounds,
-   * so J never increases.
+   * so J never increases. With friction (ConstrainedQP::FrictionTerms) a
+   * tangential traction is cut at its slip bound, and a slip DoF's step
+   * minimizes the quadratic plus w_i |x_i - p_i| (soft thresholding: the
+   * step without the term, moved toward p_i by w_i / a_ii, or to p_i):
+   * this is the reference solver of friction.
    *
    * The sweep is sequential, on the first process (the baseline, meant
    * for one process), in the order of Discretization::sweep_order(): the

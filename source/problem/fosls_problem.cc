@@ -198,6 +198,20 @@ namespace FoslsContact
           }
         used_parameters = replaced;
         compl_limit = chosen.limit;
+        // With friction the tangential tractions are free, and a stress
+        // that costs nothing without them (the pressure sigma = p I of an
+        // incompressible body, whose traction p n has a part along a
+        // curved contact boundary) can leave the quadratic form close to
+        // singular: the weight that keeps it definite is then too small
+        // to enforce complementarity (doc/method.md section 10)
+        if (scene.has_friction() &&
+            w.c_compl < friction_weak_compl * Parameters::Weights::auto_compl_cap)
+          pcout << "Warning: with friction C_compl = auto takes " << std::setprecision(3)
+                << w.c_compl << ", " << Parameters::Weights::auto_compl_cap / w.c_compl
+                << " times below its cap: the functional is close to indefinite (an "
+                   "incompressible body on a curved contact boundary?), complementarity "
+                   "is weakly enforced, and the contact pressure may be far off"
+                << std::defaultfloat << std::endl;
       }
   }
 

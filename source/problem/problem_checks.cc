@@ -326,10 +326,7 @@ namespace FoslsContact
                            " on level " + std::to_string(level + 1) +
                            " (smallest relative eigenvalue " +
                            json_number(result.min_relative_eigenvalue) +
-                           ", which no value of C_compl changes): the functional is too badly "
-                           "conditioned for double precision: " +
-                           Conditioning<dim>::advice(parameters, scene,
-                                                     discretization.get_triangulation())));
+                           ", which no value of C_compl changes): " + singular_cause()));
     std::ostringstream weights;
     weights << "C_eq = " << w.c_eq << ", C_const = " << w.c_const
             << ", C_compl = " << w.c_compl;
@@ -373,6 +370,24 @@ namespace FoslsContact
     while (level >= 0 && discretization.level(level).n_dofs > solver.definiteness_max_dofs)
       --level;
     return level;
+  }
+
+
+  template <int dim>
+  std::string
+  ProblemChecks<dim>::singular_cause() const
+  {
+    // With friction the tangential tractions of the contact boundary are
+    // free, and the pressure sigma = p I of an incompressible body costs
+    // nothing in the functional (A sigma and div sigma vanish): its
+    // traction p n has a tangential part where the contact boundary is
+    // curved against the obstacle normal, so nothing but the
+    // complementarity term holds it (doc/method.md section 10)
+    if (scene.has_friction() && std::isinf(parameters.material.lambda))
+      return "with friction the pressure of an incompressible body (Material/lambda = inf) "
+             "is free on a curved contact boundary; give a finite lambda (nu < 0.5)";
+    return "the functional is too badly conditioned for double precision: " +
+           Conditioning<dim>::advice(parameters, scene, discretization.get_triangulation());
   }
 
 

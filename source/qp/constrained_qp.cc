@@ -187,7 +187,10 @@ namespace FoslsContact
     for (unsigned int i = 0; i < n_owned(); ++i)
       {
         const double gi = g.local_element(i), xi = x.local_element(i);
-        switch (role[i])
+        // (a problem without friction terms whose roles have them, a
+        // level of an initial guess: those DoFs are free)
+        const bool friction_role = role[i] == DoFRole::traction || role[i] == DoFRole::slip;
+        switch (friction_role && !has_friction() ? DoFRole::free : role[i])
           {
             case DoFRole::free:
               r.stationarity = std::max(r.stationarity, std::abs(gi));
@@ -208,11 +211,6 @@ namespace FoslsContact
                 break;
               }
             case DoFRole::traction:
-              if (!has_friction())
-                {
-                  r.stationarity = std::max(r.stationarity, std::abs(gi));
-                  break;
-                }
               {
                 // -s <= x_i <= s: a multiplier of either sign, each of
                 // which must vanish away from its bound
@@ -225,11 +223,6 @@ namespace FoslsContact
                 break;
               }
             case DoFRole::slip:
-              if (!has_friction())
-                {
-                  r.stationarity = std::max(r.stationarity, std::abs(gi));
-                  break;
-                }
               {
                 // 0 in g_i + w_i d|x_i - p_i|: g_i = -w_i sign(x_i - p_i), or
                 // |g_i| <= w_i at x_i = p_i

@@ -248,8 +248,13 @@ namespace FoslsContact
     const auto &       partitioner = x.get_partitioner();
     const unsigned int n_owned     = x.locally_owned_size();
     constexpr double   inf         = std::numeric_limits<double>::infinity();
-    const auto         has = [&](const unsigned int i, const DoFRole r) {
-      return role[i] == r && A.diag_element(i) > 0. && (r == DoFRole::bounded || friction);
+    // (a slip DoF of weight 0 has no kink: it is free; a traction of
+    // bound 0 is held at 0, and its multiplier is never released: its two
+    // bounds are one)
+    const auto has = [&](const unsigned int i, const DoFRole r) {
+      return role[i] == r && A.diag_element(i) > 0. &&
+             (r == DoFRole::bounded ||
+              (friction && (r != DoFRole::slip || friction->slip_weights.local_element(i) > 0)));
     };
     // With friction a slip DoF away from its reference moves with the
     // sign of x_i - p_i (sign[i]), the term w_i |x_i - p_i| linear there,
@@ -354,6 +359,8 @@ namespace FoslsContact
             const auto multiplier = [&](const unsigned int i, const double g) {
               if (has(i, DoFRole::slip))
                 return friction->slip_weights.local_element(i) - std::abs(g);
+              if (lower(i) == upper(i))
+                return inf;
               return x.local_element(i) == lower(i) && lower(i) > -inf ? -g : g;
             };
             const auto release = bound_to_release(A, b, x, working, multiplier);

@@ -18,6 +18,7 @@
 #    the active set method's J and force on 2 levels (to 1e-6).
 # ctest: mpirun
 import csv
+import math
 import os
 import sys
 
@@ -57,15 +58,20 @@ for law, value in (("Tresca", "Friction/Bound=0"), ("Coulomb", "Friction/Coeffic
 check("slip_x" not in table(plain.directory)[0] and "friction" not in plain.summary,
       "frictionless: no friction columns in contact.csv, no friction in summary.json")
 
+def path(law, setting):
+    """The load path PATH with friction @p law (@p setting its datum): the
+    run, its steps and its last step; checks that the steps converge."""
+    run = R.run(SQUARE, PRESS + PATH + ["Friction/Law=" + law, setting], law + "_path")
+    show(run, law)
+    steps = run["load_steps"] or []
+    check(run.ok() and len(steps) == 3 and all(r["converged"] for r in steps),
+          law + ": the three steps converge")
+    return run, steps, steps[-1] if steps else {}
+
+
 # --- Tresca: full slip at the bound times the width
 s = 0.001
-tresca = R.run(SQUARE, PRESS + PATH + ["Friction/Law=Tresca", "Friction/Bound=%g" % s],
-               "tresca_path")
-show(tresca, "Tresca")
-steps = tresca["load_steps"] or []
-last = steps[-1] if steps else {}
-check(tresca.ok() and len(steps) == 3 and all(r["converged"] for r in steps),
-      "Tresca: the three steps converge")
+tresca, steps, last = path("Tresca", "Friction/Bound=%g" % s)
 check(abs(last.get("tangential_force", 0) - s * last.get("contact_width", 0)) <= 1e-8 * s,
       "Tresca: sliding, the tangential force is the bound times the contact width (to 1e-8)")
 rows = table(tresca.directory)
@@ -81,18 +87,13 @@ check(tresca["friction"] and tresca["friction"]["law"] == "Tresca"
 
 # --- Coulomb: full slip at f times the normal force
 f = 0.3
-coulomb = R.run(SQUARE, PRESS + PATH + ["Friction/Law=Coulomb", "Friction/Coefficient=%g" % f],
-                "coulomb_path")
-show(coulomb, "Coulomb")
-steps = coulomb["load_steps"] or []
-last = steps[-1] if steps else {}
-check(coulomb.ok() and len(steps) == 3 and all(r["converged"] for r in steps),
-      "Coulomb: the three steps converge")
-check(relative_difference(last.get("tangential_force", 0), f * last.get("normal_force", 0)) <= 1e-6
-      and last.get("stick_vertices") == 0,
+coulomb, steps, last = path("Coulomb", "Friction/Coefficient=%g" % f)
+difference = relative_difference(last.get("tangential_force", 0), f * last.get("normal_force", 0))
+check(difference <= 1e-6 and last.get("stick_vertices") == 0,
       "Coulomb: sliding, the tangential force is f times the normal force (to 1e-6)")
-print("Coulomb: %d Tresca problems in the last step" %
-      (coulomb["friction"] or {}).get("fixed_point_iterations", 0))
+print("Coulomb: sliding, |Q - f P| / (f P) below %s; %d Tresca problems in the last step" % (
+    "1e%d" % math.ceil(math.log10(max(difference, 1e-300))),
+    (coulomb["friction"] or {}).get("fixed_point_iterations", 0)))
 
 # --- pressed only: a stick zone in the middle that shrinks with f
 sticks = []
@@ -103,13 +104,54 @@ for f in (1, 0.3, 0.1):
     sticks.append(friction.get("stick_vertices", -1))
     rows = table(run.directory)
     middle = [r for r in rows if r["status"] == "1"]
-    print("pressed, f = %g: %d stick and %d slip vertices, stuck from x = %s to %s" % (
-        f, friction.get("stick_vertices", -1), friction.get("slip_vertices", -1),
-        min((r["x"] for r in middle), default="-"), max((r["x"] for r in middle), default="-")))
+    print("pressed, f = %g: %d stick and %d slip vertices, stuck from x = %s to %s, "
+          "%d Tresca problems" % (
+              f, friction.get("stick_vertices", -1), friction.get("slip_vertices", -1),
+              min((r["x"] for r in middle), default="-"),
+              max((r["x"] for r in middle), default="-"),
+              friction.get("fixed_point_iterations", 0)))
     check(run.ok() and middle and all(0 < float(r["x"]) < 1 for r in middle)
           and rows[0]["status"] == "2" and rows[-1]["status"] in ("0", "2"),
           "pressed, f = %g: the middle sticks, the ends slip" % f)
 check(sticks[0] > sticks[1] > sticks[2] > 0, "pressed: the stick zone shrinks as f decreases")
+
+# --- the definiteness limit of C_compl with the friction term (C_compl = auto)
+limits = []
+for law in ("none", "Coulomb"):
+    run = R.run(SQUARE, PRESS + ["Functional weights/C_compl=auto", "Friction/Law=" + law,
+                                 "Friction/Coefficient=0.3"], "limit_" + law)
+    limits.append((run["functional_weights"] or {}).get("C_compl_limit"))
+print("the largest definite C_compl: %s without friction, %s with" % tuple(
+    rounded(v, 4) for v in limits))
+check(all(limits) and limits[1] < limits[0],
+      "the friction term lowers the definiteness limit of C_compl")
+
+# --- a known limit: an incompressible body on a curved contact boundary.
+# Its pressure sigma = p I costs nothing in the functional, and with the
+# tangential tractions free its traction p n, which has a tangential part
+# on the curve, is held by the complementarity term alone: on 3 levels of
+# the half disc the Schur complement is indefinite without it (refused,
+# naming lambda); on 4 levels graded with exponent 3 the largest definite
+# C_compl collapses, auto takes it, and the run warns.
+disc = ["Material/lambda=inf", "Solver/Type=active set", "Friction/Bound=0.001",
+        "Functional weights/C_compl=auto"]
+refused = R.run("prm/hertz.prm", disc + ["Geometry/Levels=3", "Friction/Law=Tresca"],
+                "incompressible_3")
+lines = refused.stderr.strip().splitlines()
+check(refused.returncode == 1 and len(lines) == 1
+      and "Material/lambda = inf) is free on a curved contact boundary" in lines[0],
+      "half disc, lambda = inf, 3 levels: refused, naming lambda")
+collapse = [R.run("prm/hertz.prm", disc + ["Geometry/Levels=4", "Geometry/Grading=3",
+                                           "Friction/Law=" + law],
+                  "incompressible_4_" + law) for law in ("none", "Tresca")]
+limits = [(r["functional_weights"] or {}).get("C_compl_limit") or 0 for r in collapse]
+print("half disc, lambda = inf, 4 graded levels: the largest definite C_compl %s without friction, "
+      "below %s with" % (rounded(limits[0], 3),
+                         "1e%d" % math.ceil(math.log10(max(limits[1], 1e-300)))))
+check(limits[0] > 0.1 and 0 < limits[1] < 1e-3 * limits[0]
+      and "Warning: with friction C_compl = auto takes" in collapse[1].screen
+      and "Warning: with friction" not in collapse[0].screen,
+      "half disc, lambda = inf, 4 graded levels: the limit collapses with friction, and the run warns")
 
 # --- 2 processes: the same steps
 two = R.run(SQUARE, PRESS + PATH + ["Friction/Law=Coulomb", "Friction/Coefficient=0.3"],

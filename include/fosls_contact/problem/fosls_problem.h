@@ -217,6 +217,13 @@ namespace FoslsContact
      * step's data, Cartesian, for start_load_step().
      */
     LevelVector                          load_step_guess;
+    /**
+     * With friction, C_compl = auto below this fraction of its cap prints
+     * a warning: friction takes the limit on the square (lambda = mu) from
+     * 0.30 to 0.22, on the graded half disc with lambda = inf from 0.53 to
+     * below 1e-4 (tests/solver/friction).
+     */
+    static constexpr double friction_weak_compl = 1e-2;
     /** With friction: the law and the slip bounds of the friction faces. */
     std::unique_ptr<FrictionLaw<dim>>    friction_law;
     std::vector<double>                  slip_bounds;

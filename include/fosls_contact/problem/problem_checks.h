@@ -110,6 +110,13 @@ namespace FoslsContact
 
   private:
     /**
+     * Why no C_compl makes the contact Schur complement definite: the
+     * pressure of an incompressible body with friction, or the
+     * conditioning (Conditioning::advice()).
+     */
+    std::string singular_cause() const;
+
+    /**
      * DefinitenessCheck::run() on @p level, on the first process, its
      * outcome on every process: on the assembled finest level if
      * @p use_assembled, else on @p level assembled here with @p weights.

@@ -331,9 +331,17 @@ namespace FoslsContact
                 << ", the slip bounds of its solution differ by " << std::scientific
                 << std::setprecision(3) << change << std::defaultfloat
                 << " (relative to the largest)" << std::endl;
-          if (change <= parameters.friction.fixed_point_tolerance ||
-              fixed_point_iterations == parameters.friction.fixed_point_iterations)
+          if (change <= parameters.friction.fixed_point_tolerance)
             break;
+          if (fixed_point_iterations == parameters.friction.fixed_point_iterations)
+            {
+              std::ostringstream why;
+              why << "the Coulomb fixed point still changes the slip bounds by "
+                  << std::setprecision(3) << change << " (relative) after 'Friction/Fixed "
+                  << "point iterations' = " << fixed_point_iterations << " Tresca problems";
+              monitor->set_not_converged(why.str());
+              break;
+            }
           slip_bounds = s;
           friction_law->set_bounds(qp, slip_bounds);
           ++fixed_point_iterations;

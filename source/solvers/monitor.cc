@@ -246,7 +246,9 @@ namespace FoslsContact
     if (converged())
       return "";
     std::ostringstream why;
-    if (reason == "stalled")
+    if (!not_converged_why.empty())
+      why << "not converged: " << not_converged_why;
+    else if (reason == "stalled")
       why << "not converged: stalled at a rate of " << std::fixed << std::setprecision(4)
           << asymptotic_rate() << " per iteration"
           << (parameters.krylov_steps == 0 ?

@@ -11,7 +11,7 @@
 #    tangential traction opposes the slip at every slipping vertex.
 #  - Pressed only (a compressible body, lambda = mu, expands sideways): the
 #    middle of the contact sticks and its ends slip; the stick zone shrinks
-#    as f decreases.
+#    as f decreases; a fixed point cut short ends as not converged.
 #  - contact.csv gains the friction columns (slip, tangential traction,
 #    status) with friction only; the same steps on 2 processes as on 1.
 #  - prm/sliding_block.prm (on 3 levels) ends sliding at Q = f P (to 2%).
@@ -115,6 +115,11 @@ for f in (1, 0.3, 0.1):
           and rows[0]["status"] == "2" and rows[-1]["status"] in ("0", "2"),
           "pressed, f = %g: the middle sticks, the ends slip" % f)
 check(sticks[0] > sticks[1] > sticks[2] > 0, "pressed: the stick zone shrinks as f decreases")
+short = R.run(SQUARE, PRESS + ["Friction/Law=Coulomb", "Friction/Coefficient=0.3",
+                               "Friction/Fixed point iterations=2"], "press_short")
+check(short.ok() and short["converged"] is False and short.returncode == 2
+      and "the Coulomb fixed point still changes the slip bounds" in short.stderr,
+      "pressed, f = 0.3, 2 Tresca problems: not converged (exit code 2), naming the fixed point")
 
 # --- the definiteness limit of C_compl with the friction term (C_compl = auto)
 limits = []

@@ -70,6 +70,18 @@ namespace FoslsContact
     }
 
     /**
+     * A stop short of convergence that the caller decides (the Coulomb
+     * fixed point out of its iterations, FoslsProblem::solve()):
+     * why_not_converged() gives "not converged: " and @p why.
+     */
+    void set_not_converged(const std::string &why)
+    {
+      has_converged     = false;
+      reason            = "fixed point";
+      not_converged_why = why;
+    }
+
+    /**
      * Let report() end a run that stalls (a solver whose rate is steady
      * once the active set settles: the monotone multigrid). A stall is
      * stall_window iterations with the active set unchanged, every rate
@@ -180,6 +192,8 @@ namespace FoslsContact
     bool                          detect_divergence      = false;
     std::string                   reason;
     double                        stall_error            = 0;
+    /** set_not_converged()'s reason. */
+    std::string not_converged_why;
   };
 } // namespace FoslsContact
 

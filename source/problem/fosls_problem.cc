@@ -462,8 +462,13 @@ namespace FoslsContact
     const FieldMaxima     maxima = post.field_maxima(cartesian);
     const FunctionalValue J =
       run_summary.add_solution(summary, post, cartesian, force, *indicators, maxima);
+    // (the contact table with its friction columns, gathered once for the
+    // friction summary and the load step's row)
+    std::vector<typename ContactRow<dim>::Values> contact_rows;
+    if (scene.has_contact() && (scene.has_friction() || load_path()))
+      contact_rows = ContactTable<dim>(*discretization, friction_terms()).rows(solution);
     if (scene.has_friction())
-      add_friction_summary(force);
+      add_friction_summary(force, contact_rows);
 
     AdaptiveSteps::Step row;
     row.cells      = discretization->get_triangulation().n_global_active_cells();
@@ -505,7 +510,7 @@ namespace FoslsContact
       run_summary.add_error_estimate(summary, post, cartesian, *indicators);
     run_summary.add_forces(summary, forces, force);
     if (load_path())
-      add_load_step(forces, force, J);
+      add_load_step(forces, force, J, contact_rows);
     row.reference = reference_solved;
     if (parameters.adaptivity.reference_refinements > 0)
       {
@@ -549,7 +554,8 @@ namespace FoslsContact
   void
   FoslsProblem<dim>::add_load_step(const std::map<types::boundary_id, Tensor<1, dim>> &forces,
                                    const Tensor<1, dim> &                              force,
-                                   const FunctionalValue &                             J)
+                                   const FunctionalValue &                             J,
+                                   const std::vector<typename ContactRow<dim>::Values> &rows)
   {
     typename LoadSteps<dim>::Step row;
     for (const auto &changes : parameters.data.load_steps)
@@ -566,7 +572,6 @@ namespace FoslsContact
     if (scene.has_contact())
       {
         // (gathered on the first process, which writes the table)
-        const auto             rows = ContactTable<dim>(*discretization, friction_terms()).rows(solution);
         const ContactZone<dim> zone(rows);
         row.friction = scene.has_friction();
         if (row.friction)
@@ -585,14 +590,14 @@ namespace FoslsContact
 
   template <int dim>
   void
-  FoslsProblem<dim>::add_friction_summary(const Tensor<1, dim> &force)
+  FoslsProblem<dim>::add_friction_summary(const Tensor<1, dim> &                              force,
+                                         const std::vector<typename ContactRow<dim>::Values> &rows)
   {
     // (the rows are gathered on the first process, which prints and
     // writes summary.json)
     typename LoadSteps<dim>::Step step;
-    step.force      = force;
-    const auto rows = ContactTable<dim>(*discretization, friction_terms()).rows(solution);
-    const double L  = scene.scaling().length;
+    step.force     = force;
+    const double L = scene.scaling().length;
     LoadSteps<dim>::split_force(step, rows, [&](const Point<dim> &x) {
       return scene.obstacle_normal(x / L);
     });

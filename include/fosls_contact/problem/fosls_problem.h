@@ -7,6 +7,7 @@
 #include <fosls_contact/assembly/error_indicators.h>
 #include <fosls_contact/discretization/discretization.h>
 #include <fosls_contact/discretization/level_transfer.h>
+#include <fosls_contact/output/contact_table.h>
 #include <fosls_contact/output/output_directory.h>
 #include <fosls_contact/output/postprocessor.h>
 #include <fosls_contact/parameters/parameters.h>
@@ -116,9 +117,11 @@ namespace FoslsContact
     /**
      * With friction: the stick and slip vertices and the normal and
      * tangential contact force (@p force split along the obstacle normal),
-     * printed and in summary.json ("friction").
+     * from the contact table @p rows with its friction columns (on the
+     * first process), printed and in summary.json ("friction").
      */
-    void add_friction_summary(const Tensor<1, dim> &force);
+    void add_friction_summary(const Tensor<1, dim> &                              force,
+                              const std::vector<typename ContactRow<dim>::Values> &rows);
     /** The problem's friction terms, or null without friction (for the output). */
     const FrictionTerms *friction_terms() const
     {
@@ -176,10 +179,14 @@ namespace FoslsContact
      * same mesh, and this step's solution (Cartesian) carried as its start.
      */
     void next_load_step();
-    /** The row of this step of the load path (load_steps), and its line. */
+    /**
+     * The row of this step of the load path (load_steps), and its line;
+     * @p rows the contact table (with contact; on the first process).
+     */
     void add_load_step(const std::map<types::boundary_id, Tensor<1, dim>> &forces,
                        const Tensor<1, dim> &                              force,
-                       const FunctionalValue &                             J);
+                       const FunctionalValue &                             J,
+                       const std::vector<typename ContactRow<dim>::Values> &rows);
     /** The files of the whole run, published with the steps' VTU files. */
     void finish(OutputDirectory &output);
     /**

@@ -17,8 +17,10 @@ namespace FoslsContact
                         "fixed point of Tresca problems). Friction acts on the "
                         "tangential displacement of a load step relative to the step "
                         "before (Data/Load steps), the first step's relative to the "
-                        "undeformed body. Needs a contact boundary, 2D, and Solver/Type "
-                        "= active set (the reference) or projected gauss seidel.");
+                        "undeformed body. Needs a contact boundary and 2D; the monotone "
+                        "multigrid takes it with Solver/Krylov steps > 0 (its Newton "
+                        "step), the active set method and projected gauss seidel as "
+                        "they are.");
       prm.declare_entry("Bound",
                         "0",
                         Patterns::Anything(),

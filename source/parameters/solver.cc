@@ -108,7 +108,10 @@ namespace FoslsContact
                         "Gauss-Seidel, whose rate is not steady enough for the "
                         "estimate). auto: discretization accuracy for the "
                         "monotone multigrid, unless the scene sets Tolerance to "
-                        "another value than 1e-8 (then tolerance); tolerance for "
+                        "another value than 1e-8 or has Coulomb friction (then "
+                        "tolerance: the Coulomb fixed point compares the "
+                        "solutions of its Tresca problems to its Fixed point "
+                        "tolerance); tolerance for "
                         "the other solvers.");
       prm.declare_entry("Discretization fraction",
                         "0.1",
@@ -188,6 +191,7 @@ namespace FoslsContact
                  type == Type::monotone_multigrid && tolerance == default_tolerance ?
                                        Stopping::discretization_accuracy :
                                        Stopping::tolerance;
+      automatic_stopping      = stop == "auto";
       discretization_fraction = prm.get_double("Discretization fraction");
       pre_smoothing           = prm.get_integer("Pre smoothing");
       post_smoothing          = prm.get_integer("Post smoothing");

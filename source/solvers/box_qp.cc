@@ -1,6 +1,7 @@
 #include <fosls_contact/solvers/box_qp.h>
 #include <fosls_contact/solvers/spd_inverse.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -86,19 +87,15 @@ namespace FoslsContact
             trial[i] = s[i];
         if (!free.empty())
           {
-            FullMatrix<double> M_ff(free.size(), free.size());
-            Vector<double>     rhs(free.size()), sol(free.size());
+            Vector<double> rhs(free.size()), sol;
             for (unsigned int a = 0; a < free.size(); ++a)
               {
                 rhs[a] = g[free[a]];
                 for (unsigned int i = 0; i < n; ++i)
                   if (working[i])
                     rhs[a] -= matrix(free[a], i) * s[i];
-                for (unsigned int b = 0; b < free.size(); ++b)
-                  M_ff(a, b) = matrix(free[a], free[b]);
               }
-            invert_spd(M_ff);
-            M_ff.vmult(sol, rhs);
+            solve_reduced(free, rhs, sol);
             for (unsigned int a = 0; a < free.size(); ++a)
               trial[free[a]] = sol[a];
           }
@@ -152,5 +149,156 @@ namespace FoslsContact
           at_bound[i] = true;
         }
     return objective(c);
+  }
+
+
+  void
+  BoxQP::solve_reduced(const std::vector<unsigned int> &free,
+                       const Vector<double> &           rhs,
+                       Vector<double> &                 sol) const
+  {
+    sol.reinit(free.size());
+    if (free.empty())
+      return;
+    if (free.size() == matrix.m())
+      {
+        inverse.vmult(sol, rhs);
+        return;
+      }
+    FullMatrix<double> M_ff(free.size(), free.size());
+    for (unsigned int a = 0; a < free.size(); ++a)
+      for (unsigned int b = 0; b < free.size(); ++b)
+        M_ff(a, b) = matrix(free[a], free[b]);
+    invert_spd(M_ff);
+    M_ff.vmult(sol, rhs);
+  }
+
+
+  double
+  BoxQP::solve_with_friction(const double *      g,
+                             const double *      lo,
+                             const double *      hi,
+                             const double *      q,
+                             const double *      w,
+                             double *            c,
+                             std::vector<Bound> &where) const
+  {
+    const unsigned int n = matrix.m();
+    where.assign(n, Bound::none);
+    // the side of its kink an entry off it is on (the sign of c_i - q_i,
+    // kept explicitly: an entry released from its kink is still on it)
+    std::vector<double> side(n, 0.);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        c[i] = 0;
+        if (w[i] > 0)
+          {
+            if (q[i] == 0)
+              where[i] = Bound::kink;
+            else
+              side[i] = q[i] < 0 ? 1. : -1.;
+          }
+      }
+    const auto value = [&](const unsigned int i) {
+      return where[i] == Bound::lower ? lo[i] : where[i] == Bound::upper ? hi[i] : q[i];
+    };
+
+    std::vector<unsigned int> free;
+    Vector<double>            rhs, sol;
+    std::vector<double>       trial(n), Mc(n);
+    for (unsigned int step = 0; step < 10 * n + 10; ++step)
+      {
+        // the minimizer with the working set at its values and the slopes
+        // of the free entries' sides
+        free.clear();
+        for (unsigned int i = 0; i < n; ++i)
+          if (where[i] == Bound::none)
+            free.push_back(i);
+        for (unsigned int i = 0; i < n; ++i)
+          trial[i] = where[i] == Bound::none ? 0. : value(i);
+        rhs.reinit(free.size());
+        for (unsigned int a = 0; a < free.size(); ++a)
+          {
+            const unsigned int i = free[a];
+            rhs[a]               = g[i] - side[i] * w[i];
+            for (unsigned int j = 0; j < n; ++j)
+              if (where[j] != Bound::none)
+                rhs[a] -= matrix(i, j) * trial[j];
+          }
+        solve_reduced(free, rhs, sol);
+        for (unsigned int a = 0; a < free.size(); ++a)
+          trial[free[a]] = sol[a];
+
+        // step from c toward trial, stopping at the first bound or kink
+        double       t        = 1.;
+        unsigned int blocking = numbers::invalid_unsigned_int;
+        Bound        blocked  = Bound::none;
+        const auto   block    = [&](const unsigned int i, const double target, const Bound b) {
+          const double ti = std::max(0., (target - c[i]) / (trial[i] - c[i]));
+          if (ti < t)
+            {
+              t        = ti;
+              blocking = i;
+              blocked  = b;
+            }
+        };
+        for (const unsigned int i : free)
+          {
+            if (trial[i] > hi[i])
+              block(i, hi[i], Bound::upper);
+            if (trial[i] < lo[i])
+              block(i, lo[i], Bound::lower);
+            if ((side[i] > 0 && trial[i] < q[i]) || (side[i] < 0 && trial[i] > q[i]))
+              block(i, q[i], Bound::kink);
+          }
+        if (blocking != numbers::invalid_unsigned_int)
+          {
+            for (unsigned int i = 0; i < n; ++i)
+              c[i] += t * (trial[i] - c[i]);
+            where[blocking] = blocked;
+            c[blocking]     = value(blocking);
+            continue;
+          }
+        std::copy(trial.begin(), trial.end(), c);
+
+        // the multipliers of the working set, mu = g - M c: the entry that
+        // points out of its bound or kink the most leaves it
+        double       most   = 0;
+        unsigned int leaves = numbers::invalid_unsigned_int;
+        for (unsigned int i = 0; i < n; ++i)
+          if (where[i] != Bound::none)
+            {
+              double mci = 0;
+              for (unsigned int j = 0; j < n; ++j)
+                mci += matrix(i, j) * c[j];
+              const double mu        = g[i] - mci;
+              const double violation = where[i] == Bound::upper ? -mu :
+                                       where[i] == Bound::lower ? mu :
+                                                                  std::abs(mu) - w[i];
+              if (violation > most &&
+                  violation > 1e-14 * (std::abs(g[i]) + std::abs(mci) + w[i]))
+                {
+                  most   = violation;
+                  leaves = i;
+                  Mc[i]  = mu;
+                }
+            }
+        if (leaves == numbers::invalid_unsigned_int)
+          break;
+        if (where[leaves] == Bound::kink)
+          side[leaves] = Mc[leaves] > 0 ? 1. : -1.;
+        where[leaves] = Bound::none;
+      }
+    double objective = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        if (where[i] != Bound::none)
+          c[i] = value(i);
+        double mci = 0;
+        for (unsigned int j = 0; j < n; ++j)
+          mci += matrix(i, j) * c[j];
+        objective += 0.5 * c[i] * mci - g[i] * c[i] + w[i] * (std::abs(c[i] - q[i]) - std::abs(q[i]));
+      }
+    return objective;
   }
 } // namespace FoslsContact

@@ -122,7 +122,8 @@ namespace FoslsContact
         for (auto *vector : {&work.r_coarse, &work.ub_coarse, &work.c, &work.Ac})
           vector->reinit(coarse.partitioner);
       }
-    work.truncation.prepare(fine.partitioner, A, operators.version_of(l, A), role);
+    // (the friction terms of J are on the finest level only)
+    work.truncation.prepare(fine.partitioner, A, operators.version_of(l, A), role, l == finest);
   }
 
 

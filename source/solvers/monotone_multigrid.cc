@@ -1,3 +1,4 @@
+#include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/solvers/monotone_multigrid.h>
 
 namespace FoslsContact
@@ -108,10 +109,16 @@ namespace FoslsContact
       const ScopedTime timing(counters.operators);
       cycle.initialize_smoother(finest, qp.matrix, qp.role);
     }
+    // (the friction terms of J act on the finest level; its coarse
+    // corrections leave them alone, see LevelTruncation)
+    pre_smoother.set_friction(finest, qp.has_friction() ? &qp.friction : nullptr);
     operators.new_fine_operator(qp.matrix);
     newton_step.new_fine_operator();
 
     LevelVector x_old(x);
+    AssertThrow(finest > 0 || !qp.has_friction(),
+                ExcMessage("the monotone multigrid solves friction on two levels or more: "
+                           "on one level take 'Solver/Type' = active set"));
     if (finest == 0)
       {
         // one level: the exact coarse solve is the whole method

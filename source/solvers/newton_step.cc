@@ -4,7 +4,9 @@
 #include <fosls_contact/solvers/newton_step.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <utility>
 
 namespace FoslsContact
 {
@@ -91,14 +93,47 @@ namespace FoslsContact
   {
     // A DoF that sits at its bound while the gradient pulls it inside
     // (mu_i < 0) is left free, so that the Newton direction can release it.
+    // With friction the same for a traction at either of its bounds, and a
+    // slip DoF is held at its kink where the kink holds it (|mu_i| <= w_i);
+    // a free slip DoF carries the slope of its side (or, at its kink, of
+    // the side mu_i pulls it to) into the linear problem.
     // (the ghost DoFs too, whose entries are valid here: see LocalElements)
     const LocalElements x_local(x), ub(qp.upper_bounds), r(residual);
-    linear_role = qp.role;
+    const bool          friction = qp.has_friction();
+    linear_role                  = qp.role;
+    slope.assign(qp.n_owned(), 0.);
     for (unsigned int i = 0; i < qp.role.size(); ++i)
-      if (qp.role[i] == DoFRole::bounded)
-        linear_role[i] = (x_local(i) >= ub(i) && r(i) >= 0) ?
-                           DoFRole::fixed :
-                           DoFRole::free;
+      switch (qp.role[i])
+        {
+          case DoFRole::bounded:
+            linear_role[i] =
+              (x_local(i) >= ub(i) && r(i) >= 0) ? DoFRole::fixed : DoFRole::free;
+            break;
+          case DoFRole::traction:
+            {
+              const double s = friction ? qp.friction.traction_bounds.local_element(i) :
+                                          std::numeric_limits<double>::infinity();
+              linear_role[i] = (x_local(i) >= s && r(i) >= 0) || (x_local(i) <= -s && r(i) <= 0) ?
+                                 DoFRole::fixed :
+                                 DoFRole::free;
+              break;
+            }
+          case DoFRole::slip:
+            {
+              linear_role[i] = DoFRole::free;
+              if (!friction)
+                break;
+              const double w = qp.friction.slip_weights.local_element(i);
+              const double z = x_local(i) - qp.friction.slip_references.local_element(i);
+              if (z == 0 && std::abs(r(i)) <= w)
+                linear_role[i] = DoFRole::fixed;
+              else if (i < qp.n_owned())
+                slope[i] = (z > 0 || (z == 0 && r(i) > 0)) ? w : -w;
+              break;
+            }
+          default:
+            break;
+        }
   }
 
 
@@ -150,6 +185,8 @@ namespace FoslsContact
         for (unsigned int i = 0; i < n_owned; ++i)
           if (linear_role[i] == DoFRole::fixed)
             rhs.local_element(i) = 0;
+          else
+            rhs.local_element(i) -= slope[i];
         if (round == 0)
           tolerance = cg_reduction * rhs.l2_norm();
         SolverControl         control(parameters.krylov_steps, tolerance, false, false);
@@ -177,13 +214,16 @@ namespace FoslsContact
         d += increment;
         bool violated = false;
         for (unsigned int i = 0; round < max_rounds && i < n_owned; ++i)
-          if (qp.role[i] == DoFRole::bounded && linear_role[i] == DoFRole::free &&
-              x.local_element(i) + d.local_element(i) > qp.upper_bounds.local_element(i))
+          if (linear_role[i] == DoFRole::free)
             {
-              linear_role[i] = DoFRole::fixed;
-              fixed.push_back(i);
-              increment.local_element(i) = qp.upper_bounds.local_element(i) - x.local_element(i);
-              violated                   = true;
+              const double stop = stop_of(qp, i, x.local_element(i) + d.local_element(i));
+              if (!std::isnan(stop))
+                {
+                  linear_role[i] = DoFRole::fixed;
+                  fixed.push_back(i);
+                  increment.local_element(i) = stop - x.local_element(i);
+                  violated                   = true;
+                }
             }
         if (Utilities::MPI::max(violated ? 1u : 0u, qp.get_communicator()) == 0)
           break;
@@ -191,6 +231,167 @@ namespace FoslsContact
         exchange_ghosts(qp.partitioner, linear_role);
       }
     return n_cycles;
+  }
+
+
+  template <int dim>
+  double
+  NewtonStep<dim>::stop_of(const ConstrainedQP &qp, const unsigned int i, const double y) const
+  {
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    switch (qp.role[i])
+      {
+        case DoFRole::bounded:
+          return y > qp.upper_bounds.local_element(i) ? qp.upper_bounds.local_element(i) : none;
+        case DoFRole::traction:
+          {
+            if (!qp.has_friction())
+              return none;
+            const double s = qp.friction.traction_bounds.local_element(i);
+            return y > s ? s : y < -s ? -s : none;
+          }
+        case DoFRole::slip:
+          {
+            if (slope[i] == 0)
+              return none;
+            const double p = qp.friction.slip_references.local_element(i);
+            return (slope[i] > 0 && y < p) || (slope[i] < 0 && y > p) ? p : none;
+          }
+        default:
+          return none;
+      }
+  }
+
+
+  template <int dim>
+  typename NewtonStep<dim>::Step
+  NewtonStep<dim>::minimize_along(const ConstrainedQP &qp,
+                                  const LevelVector &  x,
+                                  const LevelVector &  e,
+                                  const double         eAe,
+                                  const double         er,
+                                  const double         t_max) const
+  {
+    // J(x + t e) - J(x) = -t e.r + t^2/2 e.A.e + sum_i w_i (|z_i + t e_i| - |z_i|)
+    // (z = x - p on the slip DoFs): convex and piecewise quadratic, with
+    // its kinks where a slip DoF crosses its reference. Its right
+    // derivative is -e.r + t e.A.e + sum_i w_i e_i sgn+(z_i + t e_i), which
+    // jumps by 2 w_i |e_i| at the kink t_i = -z_i / e_i > 0: the minimizer
+    // over [0, t_max] is found by walking the kinks in order (the same on
+    // every process: all of them are gathered).
+    const auto                              n_owned = qp.n_owned();
+    const MPI_Comm                          comm    = qp.get_communicator();
+    double                                  slope0  = 0;
+    std::vector<double>                     kinks; // (t_i, jump_i) pairs
+    if (qp.has_friction())
+      for (unsigned int i = 0; i < n_owned; ++i)
+        if (qp.role[i] == DoFRole::slip && e.local_element(i) != 0)
+          {
+            const double w  = qp.friction.slip_weights.local_element(i);
+            const double ei = e.local_element(i);
+            const double z  = x.local_element(i) - qp.friction.slip_references.local_element(i);
+            if (w == 0)
+              continue;
+            if (z == 0 || (z > 0) == (ei > 0))
+              slope0 += w * std::abs(ei);
+            else
+              {
+                slope0 -= w * std::abs(ei);
+                kinks.push_back(-z / ei);
+                kinks.push_back(2 * w * std::abs(ei));
+              }
+          }
+    std::vector<std::pair<double, double>> all;
+    if (qp.has_friction())
+      slope0 = Utilities::MPI::sum(slope0, comm);
+    if (qp.has_friction())
+      for (const auto &part : Utilities::MPI::all_gather(comm, kinks))
+        for (std::size_t k = 0; k + 1 < part.size(); k += 2)
+          all.emplace_back(part[k], part[k + 1]);
+    std::sort(all.begin(), all.end());
+
+    // walk the pieces [t_k, t_{k+1}] until the derivative turns >= 0
+    double t = 0, derivative = slope0 - er; // the right derivative at t, without t e.A.e
+    for (unsigned int k = 0; k <= all.size(); ++k)
+      {
+        const double next = std::min(t_max, k < all.size() ? all[k].first : t_max);
+        if (derivative + t * eAe >= 0)
+          break;
+        const double root = eAe > 0 ? -derivative / eAe : std::numeric_limits<double>::infinity();
+        if (root <= next)
+          {
+            t = root;
+            break;
+          }
+        t = next;
+        if (t >= t_max)
+          break;
+        derivative += all[k].second;
+      }
+    if (!std::isfinite(t))
+      return {0., 0.};
+
+    double kink_change = 0;
+    if (qp.has_friction())
+      for (unsigned int i = 0; i < n_owned; ++i)
+        if (qp.role[i] == DoFRole::slip)
+          {
+            const double z = x.local_element(i) - qp.friction.slip_references.local_element(i);
+            kink_change += qp.friction.slip_weights.local_element(i) *
+                           (std::abs(z + t * e.local_element(i)) - std::abs(z));
+          }
+    if (qp.has_friction())
+      kink_change = Utilities::MPI::sum(kink_change, comm);
+    return {t, t * (er - 0.5 * t * eAe) - kink_change};
+  }
+
+
+  template <int dim>
+  void
+  NewtonStep<dim>::move(const ConstrainedQP &qp,
+                        LevelVector &        x,
+                        const LevelVector &  e,
+                        const double         t,
+                        const bool           exact_bounds) const
+  {
+    // the DoFs that reach a bound or kink at t end exactly on it (not a
+    // rounding short of it, which would leave them inactive); a slip DoF
+    // only if t is its kink, not past it
+    std::vector<std::pair<unsigned int, double>> limiting;
+    for (unsigned int i = 0; i < qp.n_owned(); ++i)
+      {
+        const double ei = e.local_element(i), xi = x.local_element(i);
+        if (ei == 0)
+          continue;
+        double target = std::numeric_limits<double>::quiet_NaN();
+        switch (qp.role[i])
+          {
+            case DoFRole::bounded:
+              if (ei > 0)
+                target = qp.upper_bounds.local_element(i);
+              break;
+            case DoFRole::traction:
+              if (qp.has_friction())
+                target = (ei > 0 ? 1. : -1.) * qp.friction.traction_bounds.local_element(i);
+              break;
+            case DoFRole::slip:
+              if (qp.has_friction())
+                target = qp.friction.slip_references.local_element(i);
+              break;
+            default:
+              break;
+          }
+        if (!std::isnan(target) && (target - xi) / ei >= 0 && (target - xi) / ei <= t)
+          limiting.emplace_back(i, target);
+      }
+    x.add(t, e);
+    for (const auto &[i, target] : limiting)
+      if ((qp.role[i] == DoFRole::bounded && exact_bounds) || qp.role[i] == DoFRole::traction ||
+          x.local_element(i) == target ||
+          std::abs(x.local_element(i) - target) <=
+            1e-14 * (std::abs(target) + std::abs(t * e.local_element(i))))
+        x.local_element(i) = target;
+    qp.project_to_feasible(x); // round-off only
   }
 
 
@@ -205,65 +406,62 @@ namespace FoslsContact
     // taken (the same on every process: the decreases are sums over all of
     // them).
     // a) The feasible part of the step along d: x + t d with t the
-    //    minimizer alpha* = d.r / d.A.d, cut back to the largest t with
-    //    x + t d in K (J decreases by convexity). After the rounds of
-    //    direction() x + d is in K, with the DoFs they fixed exactly at
-    //    their bound.
-    // b) The projected Newton step p = P_K(x + alpha* d): every point of
-    //    the segment [x, p] is feasible (K is convex) and J is a quadratic
-    //    on it, so its minimizer t in (0, 1] is taken when p - x is a
-    //    descent direction.
+    //    minimizer of J along d, cut back to the largest t with x + t d in K
+    //    (J decreases by convexity). After the rounds of direction() x + d
+    //    is in K, with the DoFs they fixed exactly at their bound.
+    // b) The projected Newton step p = P_K(x + alpha* d), alpha* the
+    //    minimizer of J along d: every point of the segment [x, p] is
+    //    feasible (K is convex) and J is convex on it, so its minimizer t
+    //    in (0, 1] is taken when p - x is a descent direction.
     // b) alone is not enough: where the DoFs fixed by the rounds have
     //    positive multipliers, alpha* > 1, and p cuts them back to their
     //    bound while the rest of p moves on as if they did not: p - x
     //    has far more energy than d, the step along it decreases J far
     //    less than x + d, and the run stalls (doc/performance.md, "Figures behind the code").
+    // With friction J is the quadratic plus the slip DoFs' kinks, and both
+    // minimizers along a line are those of that piecewise quadratic
+    // (minimize_along()); without friction they are d.r / d.A.d and its cut.
     const auto  n_owned = qp.n_owned();
     LevelVector Ad = qp.new_vector(), step = qp.new_vector();
     vmult(qp.matrix, Ad, d);
     const double dAd = d * Ad, dr = d * residual;
-    if (!(dAd > 0) || !(dr > 0))
+    if (!(dAd > 0))
       return;
-    auto step_to_bound = [&](const unsigned int i) {
-      return std::max(0., (qp.upper_bounds.local_element(i) - x.local_element(i)) /
-                            d.local_element(i));
-    };
-    double t_d = dr / dAd;
+    double t_feasible = std::numeric_limits<double>::infinity();
     for (unsigned int i = 0; i < n_owned; ++i)
-      if (qp.role[i] == DoFRole::bounded && d.local_element(i) > 0)
-        t_d = std::min(t_d, step_to_bound(i));
-    t_d                     = Utilities::MPI::min(t_d, qp.get_communicator());
-    const double decrease_d = t_d * (dr - 0.5 * t_d * dAd);
+      {
+        const double di = d.local_element(i), xi = x.local_element(i);
+        if (qp.role[i] == DoFRole::bounded && di > 0)
+          t_feasible =
+            std::min(t_feasible, std::max(0., (qp.upper_bounds.local_element(i) - xi) / di));
+        else if (qp.role[i] == DoFRole::traction && qp.has_friction() && di != 0)
+          {
+            const double s = qp.friction.traction_bounds.local_element(i);
+            t_feasible     = std::min(t_feasible, std::max(0., ((di > 0 ? s : -s) - xi) / di));
+          }
+      }
+    t_feasible          = Utilities::MPI::min(t_feasible, qp.get_communicator());
+    const Step along_d  = minimize_along(qp, x, d, dAd, dr, t_feasible);
+    const Step unbounded = minimize_along(qp, x, d, dAd, dr, std::numeric_limits<double>::infinity());
 
     step = x;
-    step.add(dr / dAd, d);
+    step.add(unbounded.t, d);
     qp.project_to_feasible(step);
     step -= x;
     LevelVector As = qp.new_vector();
     vmult(qp.matrix, As, step);
     const double sAs = step * As, sr = step * residual;
-    double       t_p = 0, decrease_p = 0;
-    if (sAs > 0 && sr > 0)
-      {
-        t_p        = std::min(1., sr / sAs);
-        decrease_p = t_p * (sr - 0.5 * t_p * sAs);
-      }
-    if (decrease_p > decrease_d)
-      x.add(t_p, step);
+    Step         along_p;
+    if (sAs > 0)
+      along_p = minimize_along(qp, x, step, sAs, sr, 1.);
+    if (!(along_p.decrease > 0) && !(along_d.decrease > 0))
+      return;
+    // (the projected step puts the obstacles' DoFs on their bounds
+    // already, up to the round-off of x + (ub - x))
+    if (along_p.decrease > along_d.decrease)
+      move(qp, x, step, along_p.t, false);
     else
-      {
-        // the DoFs that limit t_d end exactly at their bound (not a
-        // rounding below it, which would leave them inactive)
-        std::vector<unsigned int> limiting;
-        for (unsigned int i = 0; i < n_owned; ++i)
-          if (qp.role[i] == DoFRole::bounded && d.local_element(i) > 0 &&
-              step_to_bound(i) <= t_d)
-            limiting.push_back(i);
-        x.add(t_d, d);
-        for (const auto i : limiting)
-          x.local_element(i) = qp.upper_bounds.local_element(i);
-      }
-    qp.project_to_feasible(x); // round-off only
+      move(qp, x, d, along_d.t, true);
   }
 
   template class NewtonStep<2>;

@@ -81,7 +81,7 @@ namespace FoslsContact
       unsigned int n_qps = 0;
       level.start.assign(1, 0);
       level.color_start.assign(1, 0);
-      level.bounded.clear();
+      level.roles.clear();
       level.counted.clear();
       level.box_qp.clear();
       for (const auto &color : by_color)
@@ -94,8 +94,11 @@ namespace FoslsContact
                 if (moves(dof))
                   {
                     patch_dofs.push_back(dof);
-                    level.bounded.push_back(role[dof] == DoFRole::bounded);
-                    any_bounded |= role[dof] == DoFRole::bounded;
+                    level.roles.push_back(role[dof]);
+                    // (a friction DoF has bounds or a kink where the
+                    // level relaxes with friction terms)
+                    any_bounded |= role[dof] == DoFRole::bounded ||
+                                   role[dof] == DoFRole::traction || role[dof] == DoFRole::slip;
                   }
               if (patch_dofs.size() == first)
                 continue;
@@ -393,7 +396,7 @@ namespace FoslsContact
     using MemoryConsumption::memory_consumption;
     std::size_t bytes = memory_consumption(counted) + memory_consumption(start) +
                         memory_consumption(inverse_start) + memory_consumption(neighbor_start) +
-                        neighbors.memory_consumption() + memory_consumption(bounded) +
+                        neighbors.memory_consumption() + roles.capacity() * sizeof(DoFRole) +
                         inverse.memory_consumption() + memory_consumption(row_start) +
                         columns.memory_consumption() + values.memory_consumption() +
                         memory_consumption(box_qp) + memory_consumption(color_start);

@@ -1,5 +1,6 @@
 #include <deal.II/base/memory_consumption.h>
 
+#include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/solvers/energy_check.h>
 #include <fosls_contact/solvers/patch_smoother.h>
 
@@ -30,8 +31,10 @@ namespace FoslsContact
      */
     struct RelaxationWork
     {
-      std::vector<double> g, s, c, near;
-      std::vector<bool>   at_bound;
+      std::vector<double>       g, s, c, near;
+      std::vector<bool>         at_bound;
+      std::vector<double>       lo, hi, q, w;
+      std::vector<BoxQP::Bound> where;
     };
 
     /**
@@ -55,8 +58,9 @@ namespace FoslsContact
       w.s.resize(n);
       w.c.resize(n);
       const auto room = [&](const unsigned int a, const types::global_dof_index i) {
-        return level.bounded[level.start[k] + a] ? std::max(0., ub[i] - v[i]) :
-                                                   std::numeric_limits<double>::infinity();
+        return level.roles[level.start[k] + a] == DoFRole::bounded ?
+                 std::max(0., ub[i] - v[i]) :
+                 std::numeric_limits<double>::infinity();
       };
       if (level.matrix != nullptr)
         {
@@ -171,6 +175,90 @@ namespace FoslsContact
       // round-off relative to its own terms
       return increases_energy(change, scale);
     }
+
+
+    /** Whether patch k has a DoF of role traction or slip. */
+    bool
+    has_friction_dof(const PackedPatches &level, const unsigned int k)
+    {
+      for (auto j = level.start[k]; j < level.start[k + 1]; ++j)
+        if (level.roles[j] == DoFRole::traction || level.roles[j] == DoFRole::slip)
+          return true;
+      return false;
+    }
+
+
+    /**
+     * Patch k of the constrained problem with the friction terms of J: the
+     * exact minimizer (BoxQP::solve_with_friction()) of the patch's part
+     * of J, with the obstacles of its bounded DoFs, the bounds
+     * |x_i| <= s_i of its tangential tractions and the kinks
+     * w_i |x_i - p_i| of its tangential displacements. An entry that ends
+     * on its bound or kink is set to it exactly. Returns whether J
+     * increased.
+     */
+    bool
+    relax_friction_patch(const PackedPatches &  level,
+                         const unsigned int     k,
+                         double *               v,
+                         const double *         ub,
+                         const FrictionTerms &  friction,
+                         RelaxationWork &       w)
+    {
+      const auto *       dofs     = level.neighbors.data() + level.neighbor_start[k];
+      const unsigned int n        = level.start[k + 1] - level.start[k];
+      const double       infinity = std::numeric_limits<double>::infinity();
+      const double *     s_bound  = friction.traction_bounds.begin();
+      const double *     weight   = friction.slip_weights.begin();
+      const double *     p        = friction.slip_references.begin();
+      w.lo.assign(n, -infinity);
+      w.hi.assign(n, infinity);
+      w.q.assign(n, 0.);
+      w.w.assign(n, 0.);
+      for (unsigned int a = 0; a < n; ++a)
+        {
+          const auto i = dofs[a];
+          switch (level.roles[level.start[k] + a])
+            {
+              case DoFRole::bounded:
+                w.hi[a] = std::max(0., ub[i] - v[i]);
+                break;
+              case DoFRole::traction:
+                w.lo[a] = std::min(0., -s_bound[i] - v[i]);
+                w.hi[a] = std::max(0., s_bound[i] - v[i]);
+                break;
+              case DoFRole::slip:
+                w.q[a] = p[i] - v[i];
+                w.w[a] = weight[i];
+                break;
+              default:
+                break;
+            }
+        }
+      const double change = level.qps[level.box_qp[k]].solve_with_friction(
+        w.g.data(), w.lo.data(), w.hi.data(), w.q.data(), w.w.data(), w.c.data(), w.where);
+      double scale = 0;
+      for (unsigned int a = 0; a < n; ++a)
+        {
+          const auto i = dofs[a];
+          scale += std::abs(w.g[a] * w.c[a]) + w.w[a] * (std::abs(w.c[a] - w.q[a]) + std::abs(w.q[a]));
+          switch (w.where[a])
+            {
+              case BoxQP::Bound::upper:
+                v[i] = level.roles[level.start[k] + a] == DoFRole::bounded ? ub[i] : s_bound[i];
+                break;
+              case BoxQP::Bound::lower:
+                v[i] = -s_bound[i];
+                break;
+              case BoxQP::Bound::kink:
+                v[i] = p[i];
+                break;
+              default:
+                v[i] += w.c[a];
+            }
+        }
+      return increases_energy(change, scale);
+    }
   } // namespace
 
 
@@ -205,6 +293,7 @@ namespace FoslsContact
     const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner)
   {
     shared->obstacles[l] = nullptr;
+    shared->friction[l]  = nullptr;
     shared->linear[l]    = false;
     shared->levels[l].build(
       matrix, patches, patch_color, n_colors, role, partitioner, shared->rows == PatchRows::copied);
@@ -233,6 +322,13 @@ namespace FoslsContact
 
 
   void
+  PatchSmoother::set_friction(const unsigned int l, const FrictionTerms *friction)
+  {
+    shared->friction[l] = friction;
+  }
+
+
+  void
   PatchSmoother::relax_patches(const unsigned int l,
                                const unsigned int begin,
                                const unsigned int end,
@@ -247,12 +343,16 @@ namespace FoslsContact
     thread_local RelaxationWork           work;
     unsigned int                          increases = 0;
     const bool                            linear    = shared->linear[l];
+    const FrictionTerms *                 friction  = shared->friction[l];
     for (unsigned int k = begin; k < end; ++k)
       {
         patch_defect(level, k, v, r, ub, work);
-        const bool increased = linear && level.box_qp[k] != numbers::invalid_unsigned_int ?
-                                 relax_linear_patch(level, k, v, work) :
-                                 relax_patch(level, k, v, ub, work);
+        const bool constrained = level.box_qp[k] != numbers::invalid_unsigned_int;
+        const bool increased =
+          constrained && linear ? relax_linear_patch(level, k, v, work) :
+          constrained && friction != nullptr && has_friction_dof(level, k) ?
+                                  relax_friction_patch(level, k, v, ub, *friction, work) :
+                                  relax_patch(level, k, v, ub, work);
         if (increased && level.counted[k])
           ++increases;
       }
@@ -316,6 +416,7 @@ namespace FoslsContact
     const unsigned int n_levels = shared->levels.size();
     shared->levels.assign(n_levels, PackedPatches());
     shared->obstacles.assign(n_levels, nullptr);
+    shared->friction.assign(n_levels, nullptr);
     shared->linear.assign(n_levels, false);
   }
 

@@ -76,6 +76,8 @@ namespace FoslsContact
       double       tolerance           = default_tolerance;
       unsigned int max_iterations      = 200;
       Stopping     stopping            = Stopping::tolerance;
+      /** Whether the stopping criterion was chosen by "auto". */
+      bool         automatic_stopping  = false;
       double       discretization_fraction = 0.1;
       unsigned int pre_smoothing       = 3;
       unsigned int post_smoothing      = 3;

@@ -67,7 +67,48 @@ namespace FoslsContact
                  double *             c,
                  std::vector<bool> &  at_bound) const;
 
+    /** Where an entry of the solution of solve_with_friction() ends. */
+    enum class Bound : unsigned char
+    {
+      none,  ///< strictly between its bounds and off its kink
+      lower, ///< c_i = lo_i
+      upper, ///< c_i = hi_i
+      kink,  ///< c_i = q_i
+    };
+
+    /**
+     * The local problem of a patch with friction DoFs:
+     *
+     *   minimize 1/2 c^T M c - g^T c + sum_i w_i |c_i - q_i|
+     *   subject to lo_i <= c_i <= hi_i,
+     *
+     * with lo_i <= 0 <= hi_i (c = 0 is feasible; +-inf for no bound) and
+     * w_i >= 0 (0: no kink). The same primal active set method as solve():
+     * a kink is a constraint c_i = q_i in the working set, and an entry
+     * off its kink carries the slope w_i of its side; an entry leaves the
+     * working set when its multiplier mu_i = (g - M c)_i points out of it
+     * (at a kink: |mu_i| > w_i, to the side of mu_i). J decreases in every
+     * step, so the method ends at the exact minimizer. On return
+     * @p where[i] tells which bound or kink c_i is on (then it is set to
+     * it exactly). Returns the change of the objective against c = 0.
+     */
+    double solve_with_friction(const double *      g,
+                               const double *      lo,
+                               const double *      hi,
+                               const double *      q,
+                               const double *      w,
+                               double *            c,
+                               std::vector<Bound> &where) const;
+
   private:
+    /**
+     * The solution @p sol of M_FF sol = @p rhs on the entries @p free (with
+     * the stored inverse where they are all of them).
+     */
+    void solve_reduced(const std::vector<unsigned int> &free,
+                       const Vector<double> &           rhs,
+                       Vector<double> &                 sol) const;
+
     FullMatrix<double> matrix;
     FullMatrix<double> inverse;
   };

@@ -101,6 +101,42 @@ namespace FoslsContact
                      const LevelVector &  d,
                      const LevelVector &  residual) const;
 
+    /**
+     * Where a free DoF @p i of the linear problem that the direction takes
+     * to @p y must stop instead: the bound it passes, or (a slip DoF) the
+     * kink it crosses from the side of its slope; NaN if none.
+     */
+    double stop_of(const ConstrainedQP &qp, const unsigned int i, const double y) const;
+
+    /** A step length along a line and the decrease of J it brings. */
+    struct Step
+    {
+      double t        = 0;
+      double decrease = 0;
+    };
+    /**
+     * The minimizer over [0, @p t_max] of J(x + t e), given e.A.e = @p eAe
+     * and e.(b - A x) = @p er, with the kinks of the friction term.
+     * Collective.
+     */
+    Step minimize_along(const ConstrainedQP &qp,
+                        const LevelVector &  x,
+                        const LevelVector &  e,
+                        const double         eAe,
+                        const double         er,
+                        const double         t_max) const;
+
+    /**
+     * x += t e, with the DoFs that reach their bound (or, a slip DoF, its
+     * kink) within the step set exactly to it; the obstacles' DoFs only if
+     * @p exact_bounds.
+     */
+    void move(const ConstrainedQP &qp,
+              LevelVector &        x,
+              const LevelVector &  e,
+              const double         t,
+              const bool           exact_bounds) const;
+
     const Parameters::Solver &parameters;
     PatchSmoother &           pre_smoother;
     const PatchSmoother &     post_smoother;
@@ -109,6 +145,12 @@ namespace FoslsContact
     const unsigned int        finest;
     /** The linear roles, and those the smoother was last set up with. */
     std::vector<DoFRole> linear_role, linear_role_used;
+    /**
+     * The slope +-w_i of the friction term at a free slip DoF of the
+     * linear problem (owned DoFs; 0 elsewhere): the linear problem's
+     * right-hand side is the residual less it.
+     */
+    std::vector<double> slope;
   };
 } // namespace FoslsContact
 

@@ -32,8 +32,10 @@ namespace FoslsContact
    *   first (against 32-bit DoF indices: 15% less data);
    * - the inverse of its matrix is stored as its upper triangle by rows at
    *   inverse[inverse_start[k] ..) (n (n+1)/2 entries instead of n^2);
-   * - only patches with a bounded DoF can hit an obstacle, so only they
-   *   keep a BoxQP for the constrained case (box_qp[k], an index into qps).
+   * - only patches with a bounded DoF can hit an obstacle (or, with
+   *   friction, a DoF of role traction or slip its bound or kink), so only
+   *   they keep a BoxQP for the constrained case (box_qp[k], an index into
+   *   qps); roles has the role of every patch DoF.
    *
    * Without copied rows (build() with copy_rows false) a patch's
    * neighbourhood is just its DoFs, and row_start, columns and values are
@@ -109,7 +111,7 @@ namespace FoslsContact
     std::vector<std::size_t>               inverse_start;
     std::vector<std::size_t>               neighbor_start;
     AlignedVector<types::global_dof_index> neighbors;
-    std::vector<bool>                      bounded;
+    std::vector<DoFRole>                   roles;
     AlignedVector<double>                  inverse;
     std::vector<std::size_t>               row_start;
     AlignedVector<std::uint16_t>           columns;

@@ -15,6 +15,8 @@
 
 namespace FoslsContact
 {
+  struct FrictionTerms;
+
   /**
    * Projected relaxation over Arnold-Falk-Winther vertex patches, as an
    * MGSmoother: smooth(level, v, r) minimizes 1/2 v^T A v - r^T v, patch
@@ -109,6 +111,16 @@ namespace FoslsContact
     void set_obstacles(const unsigned int l, const LevelVector &upper_bounds);
 
     /**
+     * The friction terms of J on level @p l (nullptr: none; the DoFs of
+     * roles traction and slip are then free, as on the coarse levels,
+     * whose corrections leave the fine friction DoFs alone or see them
+     * through a linear problem). With them a patch with such a DoF is
+     * relaxed exactly with its bounds and kinks
+     * (BoxQP::solve_with_friction()). They must outlive the smoothing.
+     */
+    void set_friction(const unsigned int l, const FrictionTerms *friction);
+
+    /**
      * The sweeps on level @p level: @p v changes on the owned DoFs and the
      * ghost DoFs of the patches relaxed here; its ghost values are valid
      * afterwards. Collective.
@@ -136,11 +148,13 @@ namespace FoslsContact
         : rows(rows)
         , levels(n_levels)
         , obstacles(n_levels, nullptr)
+        , friction(n_levels, nullptr)
         , linear(n_levels, false)
       {}
       const PatchRows                   rows;
       std::vector<PackedPatches>        levels;
       std::vector<const LevelVector *>  obstacles;
+      std::vector<const FrictionTerms *> friction;
       std::vector<bool>                 linear;
       std::atomic<unsigned int>         n_increases{0};
     };

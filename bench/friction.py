@@ -1,0 +1,146 @@
+#!/usr/bin/env python3
+"""Friction solved by the monotone multigrid (doc/method.md section 7.7)
+against the active set method (the semismooth Newton method of frictional
+contact), level by level:
+
+- the square pressed and then moved sideways past its stick limit
+  (tests/scenes/square.prm, Tresca, slip bound 0.001, the load path of
+  tests/solver/friction: push = 0.01; shift = 0.002; shift = 0.02),
+  levels 4 to --square-max-level;
+- prm/sliding_block.prm (Coulomb, f = 0.5, five load steps), levels 3 to
+  --block-max-level.
+
+For each run: the DoFs, the Tresca problems (one per step for Tresca, the
+fixed point's for Coulomb), the Newton steps per Tresca problem (largest
+and mean), the linear cycles of the whole run, the wall time of the whole
+run, the last step's stick vertices and its tangential force against the
+law's (Tresca: s times the contact width; Coulomb: f times the normal
+force); the active set method's run up to --reference-max-level (the
+square) and --block-reference-max-level (the block), with the largest
+difference of the steps' forces relative to the normal force. Prints the
+tables and writes doc/friction_results.md (the runs' output under
+bench/results/friction/).
+
+    friction.py [--square-max-level L] [--block-max-level L]
+                [--reference-max-level L] [--block-reference-max-level L] [--bin PATH]
+"""
+import argparse
+import json
+import os
+import re
+import time
+
+import common
+from common import BIN, RESULTS, ROOT
+
+RES = os.path.join(RESULTS, "friction")
+DOC = os.path.join(ROOT, "doc", "friction_results.md")
+SQUARE = os.path.join("..", "tests", "scenes", "square.prm")
+SQUARE_SETTINGS = ["Data/Constants=push=0.01, shift=0", "Data/Dirichlet values=shift; -push",
+                   "Data/Load steps=push=0.01; shift=0.002; shift=0.02",
+                   "Friction/Law=Tresca", "Friction/Bound=0.001"]
+SOLVERS = {"multigrid": "Solver/Type=monotone multigrid", "active set": "Solver/Type=active set"}
+
+
+def run(binary, scene, settings, name):
+    """One run into bench/results/friction/@p name: its summary.json, the
+    Newton steps of each solve (from the screen) and the wall time."""
+    out = os.path.join(RES, name)
+    cmd = common.command(scene, ["Output/Directory=" + out, "Output/Write vtu=false"]
+                         + settings, binary)
+    start = time.time()
+    p = common.launch(cmd, capture_output=True, text=True)
+    wall = time.time() - start
+    if p.returncode != 0:
+        raise SystemExit("failed: %s\n%s" % (" ".join(cmd), p.stderr))
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    steps, current = [], None
+    for line in p.stdout.splitlines():
+        if re.search(r"(monotone multigrid|active set): start", line):
+            current = 0
+            steps.append(0)
+        elif re.search(r"(monotone multigrid|active set): it\s+\d+", line) and current is not None:
+            steps[-1] += 1
+    return {"summary": summary, "steps": steps, "wall": wall}
+
+
+def law_ratio(summary, law):
+    """The last step's tangential force over the law's: s times the contact
+    width (Tresca, s = 0.001) or f times the normal force (Coulomb, f =
+    0.5)."""
+    last = (summary.get("load_steps") or [{}])[-1]
+    limit = 0.001 * last.get("contact_width", 0) if law == "Tresca" \
+        else 0.5 * last.get("normal_force", 0)
+    return last.get("tangential_force", 0) / limit if limit else float("nan")
+
+
+def force_difference(a, b):
+    """The largest difference of the steps' normal and tangential forces,
+    relative to the step's normal force."""
+    worst = 0.
+    for r, s in zip(a.get("load_steps") or [], b.get("load_steps") or []):
+        for key in ("normal_force", "tangential_force"):
+            worst = max(worst, abs(r[key] - s[key]) / r["normal_force"])
+    return worst
+
+
+def section(binary, title, scene, settings, law, levels, reference_levels, tag):
+    rows = ["| level | DoFs | solver | Tresca problems | Newton steps per problem (max, mean) "
+            "| cycles | wall time [s] | last step: stick vertices, Q / law | forces vs. active set |",
+            "|---|---|---|---|---|---|---|---|---|"]
+    for level in levels:
+        runs = {}
+        for solver, setting in SOLVERS.items():
+            if solver == "active set" and level > reference_levels:
+                continue
+            runs[solver] = run(binary, scene, settings + ["Geometry/Levels=%d" % level, setting],
+                               "%s_%d_%s" % (tag, level, solver.replace(" ", "_")))
+        for solver, r in runs.items():
+            s, steps = r["summary"], r["steps"]
+            last = (s.get("load_steps") or [{}])[-1]
+            cycles = sum(row.get("cycles", 0) for row in s.get("load_steps") or [])
+            difference = "%.1e" % force_difference(s, runs["active set"]["summary"]) \
+                if solver == "multigrid" and "active set" in runs else ""
+            rows.append("| %d | %d | %s | %d | %d, %.1f | %s | %.2f | %d, %.4f | %s |" % (
+                level, s["dofs"], solver, len(steps), max(steps), sum(steps) / len(steps),
+                cycles if solver == "multigrid" else "", r["wall"],
+                last.get("stick_vertices", -1), law_ratio(s, law), difference))
+    text = "## %s\n\n" % title + "\n".join(rows) + "\n"
+    print(text)
+    return text
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--square-max-level", type=int, default=8)
+    ap.add_argument("--block-max-level", type=int, default=7)
+    ap.add_argument("--reference-max-level", type=int, default=6)
+    ap.add_argument("--block-reference-max-level", type=int, default=5)
+    ap.add_argument("--bin", default=BIN)
+    args = ap.parse_args()
+    os.makedirs(RES, exist_ok=True)
+    parts = [
+        "# Friction: the monotone multigrid against the active set method\n",
+        "Written by `bench/friction.py` (%s). Each run is a whole load path; `cycles` counts "
+        "the linear cycles of the multigrid's Newton steps over the last Tresca problem of "
+        "each step (`load_steps.csv`), the Newton steps are those of every Tresca problem "
+        "(the iterations on the screen). The last column is the largest difference of the "
+        "steps' normal and tangential forces from the active set method's, relative to the "
+        "normal force. Wall times are of the whole run, on this machine's 2 cores.\n"
+        % " ".join("--%s %s" % (k.replace("_", "-"), v) for k, v in vars(args).items()
+                   if k != "bin"),
+        section(args.bin, "Square, Tresca (s = 0.001), pressed and moved past its stick limit",
+                SQUARE, SQUARE_SETTINGS, "Tresca", range(4, args.square_max_level + 1),
+                args.reference_max_level, "square"),
+        section(args.bin, "`prm/sliding_block.prm`, Coulomb (f = 0.5), five load steps",
+                "sliding_block.prm", [], "Coulomb", range(3, args.block_max_level + 1),
+                args.block_reference_max_level, "block"),
+    ]
+    with open(DOC, "w") as f:
+        f.write("\n".join(parts))
+    print("wrote", DOC)
+
+
+if __name__ == "__main__":
+    main()

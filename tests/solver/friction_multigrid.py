@@ -1,0 +1,137 @@
+#!/usr/bin/env python3
+# Friction solved by the monotone multigrid (the default solver): its patch
+# smoother relaxes the tangential contact DoFs with their bounds and kinks,
+# its Newton step holds the DoFs at a bound or kink and moves the others
+# with the slope of their side, and its line search minimizes J along the
+# direction with the kinks.
+#  - The square's load path (tests/scenes/square.prm, 4 levels, pressed and
+#    moved sideways past the stick limit), Tresca and Coulomb: the active set
+#    method's steps (stick and slip vertices, forces to 1e-6 of the normal
+#    force, J to 1e-6), J never increasing in any iteration of any Tresca
+#    problem, every iterate feasible.
+#  - Pressed only: the same stick zone as the active set method.
+#  - The same steps on 2 processes as on 1 (forces to 1e-8).
+#  - Adaptive (3 steps, Coulomb): the active set method's stick zone and
+#    force, at most 6 Newton steps per Tresca problem.
+#  - prm/sliding_block.prm on 3, 4 and 5 levels: the Newton steps per
+#    Tresca problem do not grow with the level (at most 6), and on 3 levels
+#    the active set method's steps.
+# ctest: mpirun
+import os
+import re
+import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from fosls_runs import Runner, check, check_monotone_feasible, finish, relative_difference
+
+R = Runner(sys.argv)
+SQUARE = "tests/scenes/square.prm"
+PRESS = ["Data/Constants=push=0.01, shift=0", "Data/Dirichlet values=shift; -push",
+         "Solver/Tolerance=1e-12"]
+PATH = ["Data/Load steps=push=0.01; shift=0.002; shift=0.02"]
+MULTIGRID = ["Solver/Type=monotone multigrid"]  # (the square's scene takes the active set)
+REFERENCE = ["Solver/Type=active set"]
+
+
+def solves(run):
+    """J at the start and after every iteration of each solve on the
+    screen (one solve per Tresca problem)."""
+    result = []
+    for line in run.screen.splitlines():
+        start = re.search(r"monotone multigrid: start\s+J = (\S+)", line)
+        step = re.search(r"monotone multigrid: it\s+\d+\s+J = (\S+)", line)
+        if start:
+            result.append([float(start.group(1))])
+        elif step and result:
+            result[-1].append(float(step.group(1)))
+    return result
+
+
+def newton_steps(run):
+    return [len(J) - 1 for J in solves(run)]
+
+
+def same_steps(a, b, tolerance):
+    """The same stick and slip vertices, forces to @p tolerance of the
+    normal force and J to @p tolerance."""
+    a, b = a["load_steps"] or [], b["load_steps"] or []
+    return len(a) == len(b) > 0 and all(
+        (r["stick_vertices"], r["slip_vertices"]) == (s["stick_vertices"], s["slip_vertices"])
+        and abs(r["normal_force"] - s["normal_force"]) <= tolerance * r["normal_force"]
+        and abs(r["tangential_force"] - s["tangential_force"]) <= tolerance * r["normal_force"]
+        and relative_difference(r["functional"], s["functional"]) <= tolerance
+        for r, s in zip(a, b))
+
+
+def monotone(run):
+    """J never increases within a solve (as printed, 7 digits)."""
+    return all(J[k] <= J[k - 1] for J in solves(run) for k in range(1, len(J)))
+
+
+laws = (("Tresca", "Friction/Bound=0.001"), ("Coulomb", "Friction/Coefficient=0.3"))
+multigrid = {}
+for law, datum in laws:
+    settings = PRESS + PATH + ["Friction/Law=" + law, datum]
+    run = R.run(SQUARE, settings + MULTIGRID, law + "_multigrid")
+    reference = R.run(SQUARE, settings + REFERENCE, law + "_active_set")
+    multigrid[law] = run
+    for row in run["load_steps"] or []:
+        print("%s step %d: %d stick and %d slip vertices" % (
+            law, row["step"], row["stick_vertices"], row["slip_vertices"]))
+    print("%s: Newton steps per Tresca problem %s" % (law, newton_steps(run)))
+    check(run.ok() and reference.ok() and same_steps(run, reference, 1e-6),
+          law + ": the active set method's steps (to 1e-6)")
+    check(monotone(run) and len(solves(run)) >= 3,
+          law + ": J never increases in an iteration of any Tresca problem")
+    check_monotone_feasible(run, law + ": the last solve")
+
+pressed = ["Friction/Law=Coulomb", "Friction/Coefficient=0.3"]
+run = R.run(SQUARE, PRESS + pressed + MULTIGRID, "pressed_multigrid")
+reference = R.run(SQUARE, PRESS + pressed + REFERENCE, "pressed_active_set")
+friction, expected = run["friction"] or {}, reference["friction"] or {}
+print("pressed, f = 0.3: %d stick and %d slip vertices" % (
+    friction.get("stick_vertices", -1), friction.get("slip_vertices", -1)))
+check(run.ok() and friction.get("stick_vertices", -1) == expected.get("stick_vertices", -2) > 0
+      and relative_difference(run["contact_force"], reference["contact_force"]) <= 1e-6,
+      "pressed, f = 0.3: the active set method's stick zone and force (to 1e-6)")
+
+two = R.run(SQUARE, PRESS + PATH + ["Friction/Law=Coulomb", "Friction/Coefficient=0.3"]
+            + MULTIGRID, "coulomb_2", processes=2)
+check(two.ok() and same_steps(two, multigrid["Coulomb"], 1e-8),
+      "Coulomb: the same steps on 2 processes as on 1 (to 1e-8)")
+
+# adaptive: each mesh's Coulomb fixed point starts from the last mesh's
+# solution (its pressure), not from a frictionless problem
+adaptive = PRESS[1:] + ["Data/Constants=push=0.01, shift=0.002", "Adaptivity/Steps=3",
+                        "Friction/Law=Coulomb", "Friction/Coefficient=0.3"]
+run = R.run(SQUARE, adaptive + MULTIGRID, "adaptive_multigrid")
+reference = R.run(SQUARE, adaptive + REFERENCE, "adaptive_active_set")
+friction, expected = run["friction"] or {}, reference["friction"] or {}
+print("adaptive, 3 steps: %s DoFs, %d stick and %d slip vertices, Newton steps per Tresca "
+      "problem %s" % (run["dofs"], friction.get("stick_vertices", -1),
+                      friction.get("slip_vertices", -1), newton_steps(run)))
+check(run.ok() and reference.ok() and monotone(run)
+      and (friction.get("stick_vertices"), friction.get("slip_vertices"))
+      == (expected.get("stick_vertices", -1), expected.get("slip_vertices", -1))
+      and relative_difference(run["contact_force"], reference["contact_force"]) <= 1e-6
+      and max(newton_steps(run), default=99) <= 6,
+      "adaptive, 3 steps: the active set method's stick zone and force (to 1e-6), J never "
+      "increases, at most 6 Newton steps per Tresca problem")
+
+steps = {}
+for levels in (3, 4, 5):
+    block = R.run("prm/sliding_block.prm", ["Geometry/Levels=%d" % levels],
+                  "sliding_block_%d" % levels)
+    steps[levels] = newton_steps(block)
+    print("prm/sliding_block.prm, %d levels: %d Tresca problems, at most %d Newton steps each" % (
+        levels, len(steps[levels]), max(steps[levels], default=0)))
+    check(block.ok() and monotone(block), "sliding block, %d levels: J never increases" % levels)
+    if levels == 3:
+        reference = R.run("prm/sliding_block.prm", ["Geometry/Levels=3"] + REFERENCE,
+                          "sliding_block_3_active_set")
+        check(same_steps(block, reference, 1e-6),
+              "sliding block, 3 levels: the active set method's steps (to 1e-6)")
+check(all(steps[l] and max(steps[l]) <= 6 for l in steps),
+      "sliding block: at most 6 Newton steps per Tresca problem on 3, 4 and 5 levels")
+finish()

@@ -56,6 +56,9 @@ for law, value in (("Tresca", "Friction/Bound=0"), ("Coulomb", "Friction/Coeffic
           and relative_difference(zero["functional"], plain["functional"]) <= 1e-8
           and relative_difference(zero["contact_force"], plain["contact_force"]) <= 1e-8,
           "%s with 0: the frictionless J and contact force (to 1e-8)" % law)
+    friction = zero["friction"] or {}
+    check(friction.get("stick_vertices") == 0 and friction.get("slip_vertices", 0) > 0,
+          "%s with 0: no vertex sticks (the stick zone of the pressed square is gone)" % law)
 check("slip_x" not in table(plain.directory)[0] and "friction" not in plain.summary,
       "frictionless: no friction columns in contact.csv, no friction in summary.json")
 

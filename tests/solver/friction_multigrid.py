@@ -16,7 +16,7 @@
 #  - prm/sliding_block.prm on 3, 4 and 5 levels: the Newton steps per
 #    Tresca problem do not grow with the level (at most 6), and on 3 levels
 #    the active set method's steps.
-# ctest: mpirun
+# ctest: mpirun sanitize
 import os
 import re
 import sys

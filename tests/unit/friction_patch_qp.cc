@@ -11,6 +11,7 @@
 //  - the returned change is the objective at c less that at 0, and <= 0;
 //  - no coordinate step of 1e-6 (either direction, kept feasible) lowers
 //    the objective: c is a local, hence the global, minimizer.
+// ctest: sanitize
 #include <deal.II/lac/full_matrix.h>
 
 #include <fosls_contact/solvers/box_qp.h>

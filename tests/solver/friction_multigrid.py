@@ -14,8 +14,9 @@
 #  - Adaptive (3 steps, Coulomb): the active set method's stick zone and
 #    force, at most 6 Newton steps per Tresca problem.
 #  - prm/sliding_block.prm on 3, 4 and 5 levels: the Newton steps per
-#    Tresca problem do not grow with the level (at most 6), and on 3 levels
-#    the active set method's steps.
+#    Tresca problem do not grow with the level (at most 6), on 3 levels
+#    the active set method's steps, on 4 levels the same steps on 4
+#    processes as on 1.
 # ctest: mpirun sanitize
 import os
 import re
@@ -132,6 +133,13 @@ for levels in (3, 4, 5):
                           "sliding_block_3_active_set")
         check(same_steps(block, reference, 1e-6),
               "sliding block, 3 levels: the active set method's steps (to 1e-6)")
+    if levels == 4:
+        # (4 processes on a coarse mesh of 2 cells: some own no DoF of the
+        # coarsest levels and no contact face)
+        spread = R.run("prm/sliding_block.prm", ["Geometry/Levels=4"], "sliding_block_4_np4",
+                       processes=4)
+        check(spread.ok() and same_steps(spread, block, 1e-8),
+              "sliding block, 4 levels: the same steps on 4 processes as on 1 (to 1e-8)")
 check(all(steps[l] and max(steps[l]) <= 6 for l in steps),
       "sliding block: at most 6 Newton steps per Tresca problem on 3, 4 and 5 levels")
 finish()

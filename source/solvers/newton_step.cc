@@ -264,85 +264,113 @@ namespace FoslsContact
 
 
   template <int dim>
-  typename NewtonStep<dim>::Step
-  NewtonStep<dim>::minimize_along(const ConstrainedQP &qp,
-                                  const LevelVector &  x,
-                                  const LevelVector &  e,
-                                  const double         eAe,
-                                  const double         er,
-                                  const double         t_max) const
+  double
+  NewtonStep<dim>::minimizer_along(const ConstrainedQP &qp,
+                                   const LevelVector &  x,
+                                   const LevelVector &  e,
+                                   const double         eAe,
+                                   const double         er,
+                                   const double         t_max) const
   {
     // J(x + t e) - J(x) = -t e.r + t^2/2 e.A.e + sum_i w_i (|z_i + t e_i| - |z_i|)
     // (z = x - p on the slip DoFs): convex and piecewise quadratic, with
     // its kinks where a slip DoF crosses its reference. Its right
     // derivative is -e.r + t e.A.e + sum_i w_i e_i sgn+(z_i + t e_i), which
     // jumps by 2 w_i |e_i| at the kink t_i = -z_i / e_i > 0: the minimizer
-    // over [0, t_max] is found by walking the kinks in order (the same on
-    // every process: all of them are gathered).
-    const auto                              n_owned = qp.n_owned();
-    const MPI_Comm                          comm    = qp.get_communicator();
-    double                                  slope0  = 0;
-    std::vector<double>                     kinks; // (t_i, jump_i) pairs
+    // is found by walking the kinks in order (the same on every process:
+    // all of them are gathered).
+    double                                 slope0 = 0;
+    std::vector<std::pair<double, double>> kinks;
     if (qp.has_friction())
-      for (unsigned int i = 0; i < n_owned; ++i)
-        if (qp.role[i] == DoFRole::slip && e.local_element(i) != 0)
-          {
-            const double w  = qp.friction.slip_weights.local_element(i);
-            const double ei = e.local_element(i);
-            const double z  = x.local_element(i) - qp.friction.slip_references.local_element(i);
-            if (w == 0)
-              continue;
-            if (z == 0 || (z > 0) == (ei > 0))
-              slope0 += w * std::abs(ei);
-            else
-              {
-                slope0 -= w * std::abs(ei);
-                kinks.push_back(-z / ei);
-                kinks.push_back(2 * w * std::abs(ei));
-              }
-          }
-    std::vector<std::pair<double, double>> all;
-    if (qp.has_friction())
-      slope0 = Utilities::MPI::sum(slope0, comm);
-    if (qp.has_friction())
-      for (const auto &part : Utilities::MPI::all_gather(comm, kinks))
-        for (std::size_t k = 0; k + 1 < part.size(); k += 2)
-          all.emplace_back(part[k], part[k + 1]);
-    std::sort(all.begin(), all.end());
+      {
+        std::vector<double> local; // (t_i, jump_i) pairs
+        for (unsigned int i = 0; i < qp.n_owned(); ++i)
+          if (qp.role[i] == DoFRole::slip && e.local_element(i) != 0 &&
+              qp.friction.slip_weights.local_element(i) > 0)
+            {
+              const double w  = qp.friction.slip_weights.local_element(i);
+              const double ei = e.local_element(i);
+              const double z  = x.local_element(i) - qp.friction.slip_references.local_element(i);
+              if (z == 0 || (z > 0) == (ei > 0))
+                slope0 += w * std::abs(ei);
+              else
+                {
+                  slope0 -= w * std::abs(ei);
+                  local.push_back(-z / ei);
+                  local.push_back(2 * w * std::abs(ei));
+                }
+            }
+        const MPI_Comm comm = qp.get_communicator();
+        slope0              = Utilities::MPI::sum(slope0, comm);
+        for (const auto &part : Utilities::MPI::all_gather(comm, local))
+          for (std::size_t k = 0; k + 1 < part.size(); k += 2)
+            kinks.emplace_back(part[k], part[k + 1]);
+        std::sort(kinks.begin(), kinks.end());
+      }
 
     // walk the pieces [t_k, t_{k+1}] until the derivative turns >= 0
     double t = 0, derivative = slope0 - er; // the right derivative at t, without t e.A.e
-    for (unsigned int k = 0; k <= all.size(); ++k)
+    for (unsigned int k = 0; k <= kinks.size(); ++k)
       {
-        const double next = std::min(t_max, k < all.size() ? all[k].first : t_max);
+        const double next = std::min(t_max, k < kinks.size() ? kinks[k].first : t_max);
         if (derivative + t * eAe >= 0)
           break;
         const double root = eAe > 0 ? -derivative / eAe : std::numeric_limits<double>::infinity();
         if (root <= next)
-          {
-            t = root;
-            break;
-          }
+          return root;
         t = next;
         if (t >= t_max)
           break;
-        derivative += all[k].second;
+        derivative += kinks[k].second;
       }
-    if (!std::isfinite(t))
-      return {0., 0.};
+    return std::isfinite(t) ? t : 0.;
+  }
 
+
+  template <int dim>
+  double
+  NewtonStep<dim>::decrease_at(const ConstrainedQP &qp,
+                               const LevelVector &  x,
+                               const LevelVector &  e,
+                               const double         eAe,
+                               const double         er,
+                               const double         t) const
+  {
     double kink_change = 0;
     if (qp.has_friction())
-      for (unsigned int i = 0; i < n_owned; ++i)
-        if (qp.role[i] == DoFRole::slip)
-          {
-            const double z = x.local_element(i) - qp.friction.slip_references.local_element(i);
-            kink_change += qp.friction.slip_weights.local_element(i) *
-                           (std::abs(z + t * e.local_element(i)) - std::abs(z));
-          }
-    if (qp.has_friction())
-      kink_change = Utilities::MPI::sum(kink_change, comm);
-    return {t, t * (er - 0.5 * t * eAe) - kink_change};
+      {
+        for (unsigned int i = 0; i < qp.n_owned(); ++i)
+          if (qp.role[i] == DoFRole::slip)
+            {
+              const double z = x.local_element(i) - qp.friction.slip_references.local_element(i);
+              kink_change += qp.friction.slip_weights.local_element(i) *
+                             (std::abs(z + t * e.local_element(i)) - std::abs(z));
+            }
+        kink_change = Utilities::MPI::sum(kink_change, qp.get_communicator());
+      }
+    return t * (er - 0.5 * t * eAe) - kink_change;
+  }
+
+
+  template <int dim>
+  double
+  NewtonStep<dim>::bound_ahead(const ConstrainedQP &qp, const unsigned int i, const double ei)
+  {
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    switch (qp.role[i])
+      {
+        case DoFRole::bounded:
+          return ei > 0 ? qp.upper_bounds.local_element(i) : none;
+        case DoFRole::traction:
+          return qp.has_friction() && ei != 0 ?
+                   (ei > 0 ? 1. : -1.) * qp.friction.traction_bounds.local_element(i) :
+                   none;
+        case DoFRole::slip:
+          return qp.has_friction() && ei != 0 ? qp.friction.slip_references.local_element(i) :
+                                                none;
+        default:
+          return none;
+      }
   }
 
 
@@ -361,26 +389,7 @@ namespace FoslsContact
     for (unsigned int i = 0; i < qp.n_owned(); ++i)
       {
         const double ei = e.local_element(i), xi = x.local_element(i);
-        if (ei == 0)
-          continue;
-        double target = std::numeric_limits<double>::quiet_NaN();
-        switch (qp.role[i])
-          {
-            case DoFRole::bounded:
-              if (ei > 0)
-                target = qp.upper_bounds.local_element(i);
-              break;
-            case DoFRole::traction:
-              if (qp.has_friction())
-                target = (ei > 0 ? 1. : -1.) * qp.friction.traction_bounds.local_element(i);
-              break;
-            case DoFRole::slip:
-              if (qp.has_friction())
-                target = qp.friction.slip_references.local_element(i);
-              break;
-            default:
-              break;
-          }
+        const double target = bound_ahead(qp, i, ei);
         if (!std::isnan(target) && (target - xi) / ei >= 0 && (target - xi) / ei <= t)
           limiting.emplace_back(i, target);
       }
@@ -420,48 +429,49 @@ namespace FoslsContact
     //    less than x + d, and the run stalls (doc/performance.md, "Figures behind the code").
     // With friction J is the quadratic plus the slip DoFs' kinks, and both
     // minimizers along a line are those of that piecewise quadratic
-    // (minimize_along()); without friction they are d.r / d.A.d and its cut.
+    // (minimizer_along()); without friction they are d.r / d.A.d and its cut.
     const auto  n_owned = qp.n_owned();
     LevelVector Ad = qp.new_vector(), step = qp.new_vector();
     vmult(qp.matrix, Ad, d);
     const double dAd = d * Ad, dr = d * residual;
     if (!(dAd > 0))
       return;
+    // (J is convex along d: its minimizer over [0, t_feasible] is the
+    // unbounded one, cut there)
     double t_feasible = std::numeric_limits<double>::infinity();
     for (unsigned int i = 0; i < n_owned; ++i)
-      {
-        const double di = d.local_element(i), xi = x.local_element(i);
-        if (qp.role[i] == DoFRole::bounded && di > 0)
-          t_feasible =
-            std::min(t_feasible, std::max(0., (qp.upper_bounds.local_element(i) - xi) / di));
-        else if (qp.role[i] == DoFRole::traction && qp.has_friction() && di != 0)
-          {
-            const double s = qp.friction.traction_bounds.local_element(i);
-            t_feasible     = std::min(t_feasible, std::max(0., ((di > 0 ? s : -s) - xi) / di));
-          }
-      }
-    t_feasible          = Utilities::MPI::min(t_feasible, qp.get_communicator());
-    const Step along_d  = minimize_along(qp, x, d, dAd, dr, t_feasible);
-    const Step unbounded = minimize_along(qp, x, d, dAd, dr, std::numeric_limits<double>::infinity());
+      if (qp.role[i] == DoFRole::bounded || qp.role[i] == DoFRole::traction)
+        {
+          const double di = d.local_element(i), bound = bound_ahead(qp, i, di);
+          if (!std::isnan(bound))
+            t_feasible = std::min(t_feasible, std::max(0., (bound - x.local_element(i)) / di));
+        }
+    t_feasible               = Utilities::MPI::min(t_feasible, qp.get_communicator());
+    const double t_unbounded = minimizer_along(qp, x, d, dAd, dr);
+    const double t_d         = std::min(t_unbounded, t_feasible);
+    const double decrease_d  = decrease_at(qp, x, d, dAd, dr, t_d);
 
     step = x;
-    step.add(unbounded.t, d);
+    step.add(t_unbounded, d);
     qp.project_to_feasible(step);
     step -= x;
     LevelVector As = qp.new_vector();
     vmult(qp.matrix, As, step);
     const double sAs = step * As, sr = step * residual;
-    Step         along_p;
+    double       t_p = 0, decrease_p = 0;
     if (sAs > 0)
-      along_p = minimize_along(qp, x, step, sAs, sr, 1.);
-    if (!(along_p.decrease > 0) && !(along_d.decrease > 0))
+      {
+        t_p        = minimizer_along(qp, x, step, sAs, sr, 1.);
+        decrease_p = decrease_at(qp, x, step, sAs, sr, t_p);
+      }
+    if (!(decrease_p > 0) && !(decrease_d > 0))
       return;
     // (the projected step puts the obstacles' DoFs on their bounds
     // already, up to the round-off of x + (ub - x))
-    if (along_p.decrease > along_d.decrease)
-      move(qp, x, step, along_p.t, false);
+    if (decrease_p > decrease_d)
+      move(qp, x, step, t_p, false);
     else
-      move(qp, x, d, along_d.t, true);
+      move(qp, x, d, t_d, true);
   }
 
   template class NewtonStep<2>;

@@ -7,6 +7,7 @@
 #include <fosls_contact/solvers/patch_smoother.h>
 #include <fosls_contact/solvers/solver_statistics.h>
 
+#include <limits>
 #include <vector>
 
 namespace FoslsContact
@@ -108,23 +109,30 @@ namespace FoslsContact
      */
     double stop_of(const ConstrainedQP &qp, const unsigned int i, const double y) const;
 
-    /** A step length along a line and the decrease of J it brings. */
-    struct Step
-    {
-      double t        = 0;
-      double decrease = 0;
-    };
     /**
-     * The minimizer over [0, @p t_max] of J(x + t e), given e.A.e = @p eAe
+     * The minimizer over [0, @p t_max] of J(x + t e), given e.A.e = @p eAe > 0
      * and e.(b - A x) = @p er, with the kinks of the friction term.
      * Collective.
      */
-    Step minimize_along(const ConstrainedQP &qp,
-                        const LevelVector &  x,
-                        const LevelVector &  e,
-                        const double         eAe,
-                        const double         er,
-                        const double         t_max) const;
+    double minimizer_along(const ConstrainedQP &qp,
+                           const LevelVector &  x,
+                           const LevelVector &  e,
+                           const double         eAe,
+                           const double         er,
+                           const double t_max = std::numeric_limits<double>::infinity()) const;
+    /** J(x) - J(x + t e), with the kinks of the friction term. Collective. */
+    double decrease_at(const ConstrainedQP &qp,
+                       const LevelVector &  x,
+                       const LevelVector &  e,
+                       const double         eAe,
+                       const double         er,
+                       const double         t) const;
+    /**
+     * The bound that DoF @p i meets moving in the direction of @p ei: the
+     * obstacle (ei > 0), the traction's bound on that side, or a slip
+     * DoF's kink; NaN if none.
+     */
+    static double bound_ahead(const ConstrainedQP &qp, const unsigned int i, const double ei);
 
     /**
      * x += t e, with the DoFs that reach their bound (or, a slip DoF, its

@@ -100,12 +100,13 @@ namespace FoslsContact
           // changing them by 1e-5 .. 3e-3, doc/method.md section 7.7)
           if (friction.law == Friction::Law::coulomb && solver.automatic_stopping)
             solver.stopping = Solver::Stopping::tolerance;
-          // (the plain cycle's coarse corrections leave the friction DoFs
-          // to the smoother: on the square it stalls at a rate of 0.999)
+          // (the plain cycle's one-sided coarse obstacles cannot hold the
+          // two-sided traction bounds or the kinks: its coarse corrections
+          // would leave the friction DoFs to the smoother alone)
           AssertThrow(solver.type != Solver::Type::monotone_multigrid || solver.krylov_steps > 0,
                       ExcMessage(law + " with 'Solver/Type' = monotone multigrid needs "
-                                       "'Solver/Krylov steps' > 0: the plain cycle moves the "
-                                       "tangential contact DoFs by the smoother only and stalls"));
+                                       "'Solver/Krylov steps' > 0: the plain cycle would leave the "
+                                       "tangential contact DoFs to the smoother alone"));
         }
     }
   } // namespace Parameters

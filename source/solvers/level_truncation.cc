@@ -9,8 +9,7 @@ namespace FoslsContact
   LevelTruncation::prepare(const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
                            const SparseMatrix<double> &                              A,
                            const Version                                             version,
-                           const std::vector<DoFRole> &                              role,
-                           const bool                                                friction)
+                           const std::vector<DoFRole> &                              role)
   {
     const unsigned int n_local = partitioner->locally_owned_size() + partitioner->n_ghost_indices();
     if (defect.get_partitioner() != partitioner)
@@ -25,22 +24,20 @@ namespace FoslsContact
         diagonal_values = diagonal(A, partitioner);
         update_ghosts(diagonal_values); // (an assignment copies the owned entries only)
       }
-    if (new_operator || roles != role || friction_truncated != friction)
+    if (new_operator || roles != role)
       {
         fixed_truncated.resize(n_local);
         bounded_dofs.clear();
         for (unsigned int i = 0; i < n_local; ++i)
           {
             fixed_truncated[i] =
-              role[i] == DoFRole::fixed || diagonal_values.local_element(i) <= 0 ||
-              (friction && (role[i] == DoFRole::traction || role[i] == DoFRole::slip));
+              role[i] == DoFRole::fixed || diagonal_values.local_element(i) <= 0;
             if (role[i] == DoFRole::bounded && !fixed_truncated[i])
               bounded_dofs.push_back(i);
             defect.local_element(i) = std::numeric_limits<double>::infinity();
           }
-        operator_version   = version;
-        roles              = role;
-        friction_truncated = friction;
+        operator_version = version;
+        roles            = role;
       }
   }
 

@@ -122,8 +122,7 @@ namespace FoslsContact
         for (auto *vector : {&work.r_coarse, &work.ub_coarse, &work.c, &work.Ac})
           vector->reinit(coarse.partitioner);
       }
-    // (the friction terms of J are on the finest level only)
-    work.truncation.prepare(fine.partitioner, A, operators.version_of(l, A), role, l == finest);
+    work.truncation.prepare(fine.partitioner, A, operators.version_of(l, A), role);
   }
 
 

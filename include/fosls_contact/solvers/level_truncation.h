@@ -20,11 +20,6 @@ namespace FoslsContact
    * which the truncation of the finer level does to the DoFs it drops) is
    * truncated: the coarse correction does not move it, and its defect
    * obstacle is +inf; any other bounded DoF may move by up to ub_i - v_i.
-   * On a level with friction terms the DoFs of roles traction and slip
-   * are truncated too: the coarse correction then leaves the friction
-   * term of J as it is, so that the Galerkin operators' decrease of the
-   * quadratic part is a decrease of J (the nonsmooth part near a kink or
-   * bound is left to the smoother and to the Newton step's linear roles).
    *
    * Most of the decision does not depend on the iterate: the fixed and
    * the switched-off DoFs change only with the operator (which changes
@@ -45,15 +40,13 @@ namespace FoslsContact
     /**
      * Bring the iterate-independent part up to date for the operator
      * @p A (identified by @p version) on the level of @p partitioner and
-     * the roles @p role; with @p friction the DoFs of roles traction and
-     * slip are truncated. (The partitioner decides when the arrays are set
+     * the roles @p role. (The partitioner decides when the arrays are set
      * up: a process may own no DoF of the level, so their sizes cannot.)
      */
     void prepare(const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
                  const SparseMatrix<double> &                              A,
                  const Version                                             version,
-                 const std::vector<DoFRole> &                              role,
-                 const bool                                                friction = false);
+                 const std::vector<DoFRole> &                              role);
 
     /**
      * The truncation at @p v for the obstacles @p ub. (The ghost values of
@@ -87,7 +80,6 @@ namespace FoslsContact
     /** The operator and roles the diagonal and fixed_truncated belong to. */
     Version              operator_version{nullptr, 0};
     std::vector<DoFRole> roles;
-    bool                 friction_truncated = false;
   };
 } // namespace FoslsContact
 

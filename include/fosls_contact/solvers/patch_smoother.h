@@ -113,8 +113,8 @@ namespace FoslsContact
     /**
      * The friction terms of J on level @p l (nullptr: none; the DoFs of
      * roles traction and slip are then free, as on the coarse levels,
-     * whose corrections leave the fine friction DoFs alone or see them
-     * through a linear problem). With them a patch with such a DoF is
+     * whose problems are the Newton step's linear ones, in which a fine
+     * friction DoF is held or free). With them a patch with such a DoF is
      * relaxed exactly with its bounds and kinks
      * (BoxQP::solve_with_friction()). They must outlive the smoothing.
      */

@@ -8,7 +8,12 @@ contact), level by level:
   tests/solver/friction: push = 0.01; shift = 0.002; shift = 0.02),
   levels 4 to --square-max-level;
 - prm/sliding_block.prm (Coulomb, f = 0.5, five load steps), levels 3 to
-  --block-max-level.
+  --block-max-level;
+- prm/cattaneo_mindlin.prm (a rigid cylinder pressed into an incompressible
+  half-plane, then pulled to Q = 0.5 f P and 0.8 f P), levels 6 to
+  --cm-max-level, against Cattaneo and Mindlin's solution: the program's
+  own comparison of each step (the screen's "Hertz" and "Cattaneo-Mindlin"
+  lines).
 
 For each run: the DoFs, the Tresca problems (one per step for Tresca, the
 fixed point's for Coulomb), the Newton steps per Tresca problem (largest
@@ -21,8 +26,9 @@ difference of the steps' forces relative to the normal force. Prints the
 tables and writes doc/friction_results.md (the runs' output under
 bench/results/friction/).
 
-    friction.py [--square-max-level L] [--block-max-level L]
-                [--reference-max-level L] [--block-reference-max-level L] [--bin PATH]
+    friction.py [--square-max-level L] [--block-max-level L] [--cm-max-level L]
+                [--reference-max-level L] [--block-reference-max-level L]
+                [--cm-reference-max-level L] [--bin PATH]
 """
 import argparse
 import json
@@ -62,7 +68,7 @@ def run(binary, scene, settings, name):
             steps.append(0)
         elif re.search(r"(monotone multigrid|active set): it\s+\d+", line) and current is not None:
             steps[-1] += 1
-    return {"summary": summary, "steps": steps, "wall": wall}
+    return {"summary": summary, "steps": steps, "wall": wall, "screen": p.stdout}
 
 
 def law_ratio(summary, law):
@@ -111,12 +117,61 @@ def section(binary, title, scene, settings, law, levels, reference_levels, tag):
     return text
 
 
+HERTZ = re.compile(r"pressure error \S+ \(relative l2 at the contact vertices\), (\S+) "
+                   r"\(relative L2 on the contact boundary\)")
+CATTANEO_MINDLIN = re.compile(
+    r"Cattaneo-Mindlin \(f = \S+, Q = \S+, Q/\(f P\) = (\S+)\): stick zone \|x\| < c = (\S+) "
+    r"along Q\n\s+computed: stick zone from (\S+) to (\S+) \((\S+) and (\S+) vertex spacings "
+    r"from -c and c\), tangential traction error (\S+) of \|q\|, (\S+) of \|f p\|")
+
+
+def cattaneo_mindlin_section(binary, levels, reference_levels):
+    """prm/cattaneo_mindlin.prm level by level: the program's comparison of
+    each pulled step with Cattaneo and Mindlin's solution, and the largest
+    pressure error against Hertz's of the three steps."""
+    rows = ["| level | DoFs | vertex spacing | wall time [s] | Newton steps per problem (max) "
+            "| pressure error (max) | Q/(f P) | c | stick zone | ends from -c, c [spacings] "
+            "| traction error of q | forces vs. active set |",
+            "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for level in levels:
+        runs = {}
+        for solver, setting in SOLVERS.items():
+            if solver == "active set" and level > reference_levels:
+                continue
+            runs[solver] = run(binary, "cattaneo_mindlin.prm",
+                               ["Geometry/Levels=%d" % level, setting],
+                               "cattaneo_mindlin_%d_%s" % (level, solver.replace(" ", "_")))
+        r = runs["multigrid"]
+        pressure = max(float(m.group(1)) for m in HERTZ.finditer(r["screen"]))
+        difference = "%.1e" % force_difference(r["summary"], runs["active set"]["summary"]) \
+            if "active set" in runs else ""
+        spacing = 0.5 / 2 ** (level - 1)
+        for k, m in enumerate(m for m in CATTANEO_MINDLIN.finditer(r["screen"])
+                              if float(m.group(1)) > 1e-6):
+            ratio, c, lo, hi, e_lo, e_hi, of_q, _ = m.groups()
+            head = "| %d | %d | %.5f | %.1f | %d | %.4f" % (
+                level, r["summary"]["dofs"], spacing, r["wall"], max(r["steps"]), pressure) \
+                if k == 0 else "| | | | | |"
+            rows.append("%s | %s | %s | %s to %s | %s, %s | %s | %s |" % (
+                head, ratio, c, lo, hi, e_lo, e_hi, of_q, difference if k == 0 else ""))
+    text = ("## `prm/cattaneo_mindlin.prm`: Cattaneo-Mindlin, Coulomb (f = 0.3)\n\n"
+            "Pressed with P = 0.01 (Hertz's a = 0.080), then pulled to Q = 0.0015 and 0.0024. "
+            "The pressure error is the largest of the three steps (relative L2 on the contact "
+            "boundary); the stick zone's ends lie midway between the outermost stick vertex and "
+            "the next one; the traction error is the relative L2 error of the tangential "
+            "traction against Cattaneo-Mindlin's q.\n\n" + "\n".join(rows) + "\n")
+    print(text)
+    return text
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--square-max-level", type=int, default=8)
     ap.add_argument("--block-max-level", type=int, default=7)
     ap.add_argument("--reference-max-level", type=int, default=6)
     ap.add_argument("--block-reference-max-level", type=int, default=5)
+    ap.add_argument("--cm-max-level", type=int, default=9)
+    ap.add_argument("--cm-reference-max-level", type=int, default=6)
     ap.add_argument("--bin", default=BIN)
     args = ap.parse_args()
     os.makedirs(RES, exist_ok=True)
@@ -136,6 +191,8 @@ def main():
         section(args.bin, "`prm/sliding_block.prm`, Coulomb (f = 0.5), five load steps",
                 "sliding_block.prm", [], "Coulomb", range(3, args.block_max_level + 1),
                 args.block_reference_max_level, "block"),
+        cattaneo_mindlin_section(args.bin, range(6, args.cm_max_level + 1),
+                                 args.cm_reference_max_level),
     ]
     with open(DOC, "w") as f:
         f.write("\n".join(parts))

@@ -474,9 +474,10 @@ namespace FoslsContact
     const FunctionalValue J =
       run_summary.add_solution(summary, post, cartesian, force, *indicators, maxima);
     // (the contact table with its friction columns, gathered once for the
-    // friction summary and the load step's row)
+    // friction summary, the load step's row and the Hertz comparison)
     std::vector<typename ContactRow<dim>::Values> contact_rows;
-    if (scene.has_contact() && (scene.has_friction() || load_path()))
+    const bool hertz = parameters.hertz.shape != Parameters::HertzComparison::Shape::none;
+    if (scene.has_contact() && (scene.has_friction() || load_path() || hertz))
       contact_rows = ContactTable<dim>(*discretization, friction_terms()).rows(solution);
     if (scene.has_friction())
       add_friction_summary(force, contact_rows);
@@ -501,10 +502,9 @@ namespace FoslsContact
     for (unsigned int d = 0; d < dim; ++d)
       row.force.push_back(force[d]);
     row.time_solve_s = time_solve - steps.total_solve_time();
-    if (parameters.hertz.shape != Parameters::HertzComparison::Shape::none &&
-        scene.has_contact())
+    if (hertz && scene.has_contact())
       std::tie(row.hertz_pressure_error, row.hertz_pressure_error_boundary) =
-        run_summary.add_hertz_comparison(summary, post, force);
+        run_summary.add_hertz_comparison(summary, force, contact_rows);
     if (scene.has_exact_solution())
       {
         const ErrorNorms e   = run_summary.add_errors(summary, post, cartesian);

@@ -5,6 +5,7 @@
 #include <fosls_contact/base/json.h>
 #include <fosls_contact/output/contact_table.h>
 #include <fosls_contact/output/contact_zone.h>
+#include <fosls_contact/output/cattaneo_mindlin.h>
 #include <fosls_contact/output/hertz_pressure.h>
 #include <fosls_contact/problem/conditioning.h>
 #include <fosls_contact/problem/run_summary.h>
@@ -477,12 +478,11 @@ namespace FoslsContact
 
   template <int dim>
   std::pair<double, double>
-  RunSummary<dim>::add_hertz_comparison(Summary &                 summary,
-                                        const Postprocessor<dim> &post,
-                                        const Tensor<1, dim> &    force) const
+  RunSummary<dim>::add_hertz_comparison(
+    Summary &                                            summary,
+    const Tensor<1, dim> &                               force,
+    const std::vector<typename ContactRow<dim>::Values> &rows) const
   {
-    // (the contact table is gathered on the first process)
-    const auto rows = ContactTable<dim>(discretization).rows(solution);
     Point<dim> contact_point;
     for (unsigned int d = 0; d < dim; ++d)
       contact_point[d] = parameters.hertz.contact_point[d] / scene.scaling().length;
@@ -492,6 +492,15 @@ namespace FoslsContact
     hertz.evaluate(force, rows);
     summary["hertz"] = hertz.json();
     pcout << hertz.report() << std::endl;
+    // (friction is 2D; Coulomb's f is dimensionless)
+    if (dim == 2 && parameters.hertz.shape == Parameters::HertzComparison::Shape::cylinder &&
+        scene.friction_law() == Parameters::Friction::Law::coulomb)
+      {
+        CattaneoMindlin<dim> cattaneo_mindlin(hertz, scene.friction_data().value(contact_point));
+        cattaneo_mindlin.evaluate(force, rows);
+        summary["cattaneo_mindlin"] = cattaneo_mindlin.json();
+        pcout << cattaneo_mindlin.report() << std::endl;
+      }
     return {hertz.relative_pressure_error(), hertz.relative_pressure_error_boundary()};
   }
 

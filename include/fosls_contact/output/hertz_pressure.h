@@ -53,6 +53,18 @@ namespace FoslsContact
 
     /** Hertz's pressure at distance @p r from the contact point. */
     double pressure(const double r) const;
+    /** The distance of @p p from the contact point, in the plane of contact. */
+    double distance(const Tensor<1, dim> &p) const;
+
+    /** @{ After evaluate(): Hertz's F (the full model's), a and p0. */
+    double normal_force() const { return force; }
+    double half_width() const { return a; }
+    double maximum_pressure() const { return p0; }
+    /** @} */
+    double force_factor() const { return hertz.force_factor; }
+    const Tensor<1, dim> &contact_point() const { return center; }
+    /** The unit obstacle normal at the contact point. */
+    const Tensor<1, dim> &contact_normal() const { return normal; }
 
     /**
      * The relative l2 error of the computed pressure at the contact
@@ -74,9 +86,7 @@ namespace FoslsContact
     std::string json() const;
 
   private:
-    /** The distance of @p p from the contact point, in the plane of contact. */
-    double distance(const Tensor<1, dim> &p) const;
-    bool   cylinder() const;
+    bool cylinder() const;
 
     const Parameters::HertzComparison hertz;
     double                            contact_modulus; ///< E*

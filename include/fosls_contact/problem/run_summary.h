@@ -6,6 +6,7 @@
 
 #include <fosls_contact/assembly/error_indicators.h>
 #include <fosls_contact/discretization/discretization.h>
+#include <fosls_contact/output/contact_table.h>
 #include <fosls_contact/output/postprocessor.h>
 #include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
@@ -134,12 +135,17 @@ namespace FoslsContact
                     const Tensor<1, dim> &                              force) const;
     /**
      * The comparison with Hertz's contact pressure, for a scene that
-     * declares one; returns the relative errors of the pressure: l2 at
-     * the contact vertices, and L2 on the contact boundary.
+     * declares one, on the contact table @p rows (ContactTable::rows(),
+     * with the friction columns for a scene with friction); for a
+     * cylinder in 2D with Coulomb friction also Cattaneo and Mindlin's
+     * stick zone and tangential traction (CattaneoMindlin). Returns the
+     * relative errors of the pressure: l2 at the contact vertices, and L2
+     * on the contact boundary.
      */
-    std::pair<double, double> add_hertz_comparison(Summary &                 summary,
-                              const Postprocessor<dim> &post,
-                              const Tensor<1, dim> &    force) const;
+    std::pair<double, double>
+    add_hertz_comparison(Summary &                                            summary,
+                         const Tensor<1, dim> &                               force,
+                         const std::vector<typename ContactRow<dim>::Values> &rows) const;
     /** The errors against the scene's exact solution; refuses non-finite ones. */
     ErrorNorms add_errors(Summary &summary, const Postprocessor<dim> &post, const LevelVector &cartesian) const;
 

@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+# prm/cattaneo_mindlin.prm on 8 levels: a rigid cylinder pressed into an
+# incompressible half-plane (its far field on the box's outer boundary)
+# with P = 0.01, then pulled sideways with Q = 0.5 f P and 0.8 f P under
+# Coulomb friction (f = 0.3), against Cattaneo and Mindlin's solution
+# (Johnson, Contact Mechanics, section 7.1), computed here from each
+# step's contact_000N.csv:
+#  - the contact force is P and Q to 1% (the far field's data carry them);
+#  - the pressure is within 2% of Hertz's for the computed force
+#    (relative L2 on the contact boundary);
+#  - pressed, the tangential traction is within 3% of f p (relative L2):
+#    an incompressible body on a rigid obstacle (Dundurs' beta = 0) gets
+#    no tangential traction from the pressure;
+#  - pulled: each end of the stick zone, midway between its outermost
+#    stick vertex and the next vertex, is within one vertex spacing of
+#    +-c = +-a sqrt(1 - Q/(f P)), and the tangential traction is within 5%
+#    of q (relative L2);
+#  - the program's own comparison (summary.json "hertz" and
+#    "cattaneo_mindlin", the last step) gives the figures computed here
+#    (to 1e-6);
+#  - J never increases, every iterate feasible (the last solve).
+# ctest: timeout=400
+import csv
+import math
+import os
+import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from fosls_runs import Runner, check, check_monotone_feasible, finish, rounded
+
+R = Runner(sys.argv)
+P, F, RADIUS, E_STAR = 0.01, 0.3, 2., 4.   # E* = 4 mu for nu = 1/2
+LOADS = [0., 0.0015, 0.0024]
+
+
+def compare(rows, normal_force, tangential_force):
+    """Hertz's and Cattaneo-Mindlin's figures for one step's contact table."""
+    a = math.sqrt(4 * normal_force * RADIUS / (math.pi * E_STAR))
+    p0 = 2 * normal_force / (math.pi * a)
+    ratio = tangential_force / (F * normal_force)
+    c = a * math.sqrt(1 - ratio)
+
+    def p(x):
+        return p0 * math.sqrt(1 - x * x / (a * a)) if abs(x) < a else 0.
+
+    def q(x):
+        return F * p(x) - (F * p0 * (c / a) * math.sqrt(1 - x * x / (c * c)) if abs(x) < c else 0.)
+
+    x = [float(r["x"]) for r in rows]
+    w = [float(r["boundary_share"]) for r in rows]
+    p_h = [-float(r["sigma_nn"]) for r in rows]
+    q_h = [float(r["traction_t_x"]) for r in rows]   # Q points along +x
+
+    def l2(values):
+        return math.sqrt(sum(wi * v * v for wi, v in zip(w, values)))
+
+    result = {"a": a, "c": c, "ratio": ratio,
+              "pressure_error": l2([ph - p(xi) for ph, xi in zip(p_h, x)]) / l2([p(xi) for xi in x]),
+              "of_fp": l2([qh - q(xi) for qh, xi in zip(q_h, x)]) / l2([F * p(xi) for xi in x])}
+    if ratio > 1e-6:   # (pressed, q = 0 up to round-off)
+        result["of_q"] = l2([qh - q(xi) for qh, xi in zip(q_h, x)]) / l2([q(xi) for xi in x])
+    stick = [i for i, r in enumerate(rows) if r["in_contact"] == "1" and r["status"] == "1"]
+    lo, hi = min(stick), max(stick)
+    result["from"], result["to"] = (x[lo] + x[lo - 1]) / 2, (x[hi] + x[hi + 1]) / 2
+    result["from_error"] = abs(result["from"] + c) / (x[lo] - x[lo - 1])
+    result["to_error"] = abs(result["to"] - c) / (x[hi + 1] - x[hi])
+    return result
+
+
+run = R.run("prm/cattaneo_mindlin.prm", ["Geometry/Levels=8"], "cattaneo_mindlin")
+check_monotone_feasible(run, "8 levels")
+with open(os.path.join(run.directory, "load_steps.csv")) as f:
+    steps = list(csv.DictReader(f))
+check(len(steps) == len(LOADS), "every step written")
+figures = []
+for k, (Q, step) in enumerate(zip(LOADS, steps)):
+    with open(os.path.join(run.directory, "contact_%04d.csv" % k)) as f:
+        rows = sorted(csv.DictReader(f), key=lambda r: float(r["x"]))
+    normal, tangential = float(step["normal_force"]), float(step["tangential_force"])
+    r = compare(rows, normal, tangential)
+    figures.append(r)
+    print("Q = %g: P = %s, Q = %s, Q/(f P) = %s; Hertz a = %s, pressure error %s%%" % (
+        Q, rounded(normal, 4), rounded(tangential if Q else 0, 4),
+        rounded(r["ratio"] if Q else 0, 3), rounded(r["a"], 4),
+        rounded(100 * r["pressure_error"], 2)))
+    print("  c = %s, stick zone from %s to %s (%s and %s vertex spacings from -c and c), "
+          "traction error %s of |f p|%s" % (
+              rounded(r["c"], 4), rounded(r["from"], 4), rounded(r["to"], 4),
+              rounded(r["from_error"], 2), rounded(r["to_error"], 2), rounded(r["of_fp"], 2),
+              ", %s of |q|" % rounded(r["of_q"], 2) if "of_q" in r else ""))
+    # (pressed, Q is 0 up to round-off, which the screen does not show)
+    check(abs(normal - P) <= 0.01 * P and abs(tangential - Q) <= 0.01 * max(Q, 1e-6 * P),
+          "Q = %g: the contact force is P and Q to 1%%" % Q)
+    check(r["pressure_error"] <= 0.02, "Q = %g: the pressure within 2%% of Hertz's" % Q)
+    if Q == 0:
+        check(r["of_fp"] <= 0.03, "pressed: the tangential traction within 3% of f p")
+    else:
+        check(r["from_error"] <= 1 and r["to_error"] <= 1,
+              "Q = %g: both ends of the stick zone within one vertex spacing of +-c" % Q)
+        check(r["of_q"] <= 0.05, "Q = %g: the tangential traction within 5%% of q" % Q)
+
+last, hertz, cm = figures[-1], run["hertz"], run["cattaneo_mindlin"]
+check(hertz is not None and cm is not None
+      and abs(hertz["pressure_error_boundary"] - last["pressure_error"]) <= 1e-6 * last["pressure_error"]
+      and all(abs(cm[k] - last[v]) <= 1e-6 * abs(last[v])
+              for k, v in (("c", "c"), ("ratio", "ratio"), ("stick_from", "from"), ("stick_to", "to"),
+                           ("stick_from_error", "from_error"), ("stick_to_error", "to_error"),
+                           ("traction_error", "of_q"), ("traction_error_of_slip_limit", "of_fp"))),
+      "summary.json's Hertz and Cattaneo-Mindlin comparison gives the figures computed here")
+finish()

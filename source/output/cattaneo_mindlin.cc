@@ -78,7 +78,11 @@ namespace FoslsContact
         along.emplace_back((p - hertz.contact_point()) * e,
                            row[Row::in_contact] == 1 && row[Row::status] == 1);
       }
-    error_of_q  = norm_q > 0 ? std::sqrt(difference / norm_q) : inf;
+    // (without a tangential force beyond round-off q is 0, and so is a
+    // norm relative to it)
+    constexpr double round_off = 1e-6;
+    error_of_q = ratio > round_off && norm_q > 0 ? std::sqrt(difference / norm_q) :
+                                                   std::numeric_limits<double>::quiet_NaN();
     error_of_fp = norm_fp > 0 ? std::sqrt(difference / norm_fp) : inf;
 
     // each end of the stick zone midway between its outermost stick vertex
@@ -121,8 +125,10 @@ namespace FoslsContact
           << from_error << " and " << to_error << " vertex spacings from -c and c)";
     else
       out << "no vertex sticks";
-    out << std::setprecision(3) << ", tangential traction error " << error_of_q << " of |q|, "
-        << error_of_fp << " of |f p| (relative L2 on the contact boundary)";
+    out << std::setprecision(3) << ", tangential traction error ";
+    if (!std::isnan(error_of_q))
+      out << error_of_q << " of |q|, ";
+    out << error_of_fp << " of |f p| (relative L2 on the contact boundary)";
     return out.str();
   }
 

@@ -35,8 +35,9 @@ namespace FoslsContact
    * computed end is within one spacing of c when this is <= 1); and the
    * relative L2 error of the tangential traction along Q on the contact
    * boundary (by the vertex rule, as HertzPressure's), against |q| and
-   * against |f p| (the slip limit; the one that stays meaningful at Q = 0,
-   * where q = 0).
+   * against |f p| (the slip limit; the only one at Q = 0, where q = 0:
+   * below Q/(f P) = 1e-6 the error against |q| is not computed, null in
+   * summary.json).
    */
   template <int dim>
   class CattaneoMindlin
@@ -57,7 +58,7 @@ namespace FoslsContact
 
     /** Two lines for the screen. */
     std::string report() const;
-    /** The JSON object for summary.json (inside "hertz"). */
+    /** The JSON object for summary.json ("cattaneo_mindlin"). */
     std::string json() const;
 
   private:

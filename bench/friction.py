@@ -91,17 +91,24 @@ def force_difference(a, b):
     return worst
 
 
+def solver_runs(binary, scene, settings, level, reference_levels, tag):
+    """The runs of @p scene on @p level levels by solver: the multigrid, and
+    the active set method up to @p reference_levels."""
+    runs = {}
+    for solver, setting in SOLVERS.items():
+        if solver == "active set" and level > reference_levels:
+            continue
+        runs[solver] = run(binary, scene, settings + ["Geometry/Levels=%d" % level, setting],
+                           "%s_%d_%s" % (tag, level, solver.replace(" ", "_")))
+    return runs
+
+
 def section(binary, title, scene, settings, law, levels, reference_levels, tag):
     rows = ["| level | DoFs | solver | Tresca problems | Newton steps per problem (max, mean) "
             "| cycles | wall time [s] | last step: stick vertices, Q / law | forces vs. active set |",
             "|---|---|---|---|---|---|---|---|---|"]
     for level in levels:
-        runs = {}
-        for solver, setting in SOLVERS.items():
-            if solver == "active set" and level > reference_levels:
-                continue
-            runs[solver] = run(binary, scene, settings + ["Geometry/Levels=%d" % level, setting],
-                               "%s_%d_%s" % (tag, level, solver.replace(" ", "_")))
+        runs = solver_runs(binary, scene, settings, level, reference_levels, tag)
         for solver, r in runs.items():
             s, steps = r["summary"], r["steps"]
             last = (s.get("load_steps") or [{}])[-1]
@@ -134,13 +141,8 @@ def cattaneo_mindlin_section(binary, levels, reference_levels):
             "| traction error of q | forces vs. active set |",
             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for level in levels:
-        runs = {}
-        for solver, setting in SOLVERS.items():
-            if solver == "active set" and level > reference_levels:
-                continue
-            runs[solver] = run(binary, "cattaneo_mindlin.prm",
-                               ["Geometry/Levels=%d" % level, setting],
-                               "cattaneo_mindlin_%d_%s" % (level, solver.replace(" ", "_")))
+        runs = solver_runs(binary, "cattaneo_mindlin.prm", [], level, reference_levels,
+                           "cattaneo_mindlin")
         r = runs["multigrid"]
         pressure = max(float(m.group(1)) for m in HERTZ.finditer(r["screen"]))
         difference = "%.1e" % force_difference(r["summary"], runs["active set"]["summary"]) \

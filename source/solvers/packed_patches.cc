@@ -84,25 +84,27 @@ namespace FoslsContact
       level.roles.clear();
       level.counted.clear();
       level.box_qp.clear();
+      level.friction.clear();
       for (const auto &color : by_color)
         {
           for (const unsigned int p : color)
             {
               const auto first       = patch_dofs.size();
-              bool       any_bounded = false;
+              bool       any_bounded = false, any_friction = false;
               for (const auto dof : patches[p])
                 if (moves(dof))
                   {
                     patch_dofs.push_back(dof);
                     level.roles.push_back(role[dof]);
+                    any_friction |= role[dof] == DoFRole::traction || role[dof] == DoFRole::slip;
                     // (a friction DoF has bounds or a kink where the
                     // level relaxes with friction terms)
-                    any_bounded |= role[dof] == DoFRole::bounded ||
-                                   role[dof] == DoFRole::traction || role[dof] == DoFRole::slip;
+                    any_bounded |= role[dof] == DoFRole::bounded || any_friction;
                   }
               if (patch_dofs.size() == first)
                 continue;
               level.counted.push_back(patch_dofs[first] < n_owned);
+              level.friction.push_back(any_friction);
               level.box_qp.push_back(any_bounded ? n_qps++ : numbers::invalid_unsigned_int);
               level.start.push_back(patch_dofs.size());
             }
@@ -399,7 +401,8 @@ namespace FoslsContact
                         neighbors.memory_consumption() + roles.capacity() * sizeof(DoFRole) +
                         inverse.memory_consumption() + memory_consumption(row_start) +
                         columns.memory_consumption() + values.memory_consumption() +
-                        memory_consumption(box_qp) + memory_consumption(color_start);
+                        memory_consumption(box_qp) + memory_consumption(friction) +
+                        memory_consumption(color_start);
     for (const BoxQP &qp : qps)
       bytes += qp.memory_consumption();
     for (const LinearPatch &patch : linear_patch)

@@ -177,17 +177,6 @@ namespace FoslsContact
     }
 
 
-    /** Whether patch k has a DoF of role traction or slip. */
-    bool
-    has_friction_dof(const PackedPatches &level, const unsigned int k)
-    {
-      for (auto j = level.start[k]; j < level.start[k + 1]; ++j)
-        if (level.roles[j] == DoFRole::traction || level.roles[j] == DoFRole::slip)
-          return true;
-      return false;
-    }
-
-
     /**
      * Patch k of the constrained problem with the friction terms of J: the
      * exact minimizer (BoxQP::solve_with_friction()) of the patch's part
@@ -350,7 +339,7 @@ namespace FoslsContact
         const bool constrained = level.box_qp[k] != numbers::invalid_unsigned_int;
         const bool increased =
           constrained && linear ? relax_linear_patch(level, k, v, work) :
-          constrained && friction != nullptr && has_friction_dof(level, k) ?
+          constrained && friction != nullptr && level.friction[k] ?
                                   relax_friction_patch(level, k, v, ub, *friction, work) :
                                   relax_patch(level, k, v, ub, work);
         if (increased && level.counted[k])

@@ -117,6 +117,8 @@ namespace FoslsContact
     AlignedVector<std::uint16_t>           columns;
     AlignedVector<double>                  values;
     std::vector<unsigned int>              box_qp;
+    /** Whether patch k has a DoF of role traction or slip. */
+    std::vector<bool>                      friction;
     std::vector<BoxQP>                     qps;
     std::vector<unsigned int>              color_start;
     /**

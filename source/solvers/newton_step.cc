@@ -336,6 +336,9 @@ namespace FoslsContact
                                const double         er,
                                const double         t) const
   {
+    // (the kinks' change summed per DoF, not as ConstrainedQP::friction_term()
+    // at x + t e less at x: the change of a short step would be lost in the
+    // round-off of the two sums)
     double kink_change = 0;
     if (qp.has_friction())
       {

@@ -172,41 +172,74 @@ namespace FoslsContact
     // an affine cell, exact with 2 points per direction; the third covers
     // the curved cells' mapping
     const QGauss<dim> quadrature(3);
-    FEValues<dim>     fe_values(mapping,
-                            discretization.get_fe(),
-                            quadrature,
-                            update_values | update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector displacement(0);
-    const unsigned int               nq = quadrature.size();
-    std::vector<Tensor<1, dim>>      u(nq), row(nq);
-    std::vector<Tensor<2, dim>>      grad_u(nq);
-    std::vector<double>              div(nq);
-    ErrorNorms                       e;
-    for (const auto &cell : discretization.get_dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
+    struct Scratch
+    {
+      Scratch(const Mapping<dim> &mapping, const FiniteElement<dim> &fe, const Quadrature<dim> &q)
+        : fe_values(mapping, fe, q, update_values | update_gradients | update_JxW_values)
+        , u(q.size())
+        , row(q.size())
+        , grad_u(q.size())
+        , div(q.size())
+      {}
+      Scratch(const Scratch &other)
+        : Scratch(other.fe_values.get_mapping(),
+                  other.fe_values.get_fe(),
+                  other.fe_values.get_quadrature())
+      {}
+      FEValues<dim>               fe_values;
+      std::vector<Tensor<1, dim>> u, row;
+      std::vector<Tensor<2, dim>> grad_u;
+      std::vector<double>         div;
+    };
+    // Cell by cell in parallel (WorkStream): every cell writes its own
+    // squares, summed in cell order after the loop, so that the norms do
+    // not depend on the threads.
+    struct NoCopy
+    {};
+    std::vector<ErrorNorms> cells(discretization.get_triangulation().n_active_cells());
+    const auto worker = [&](const auto &cell, Scratch &scratch, NoCopy &) {
+      if (!cell->is_locally_owned())
+        return;
+      const FEValuesExtractors::Vector displacement(0);
+      FEValues<dim> &                  fe_values = scratch.fe_values;
+      ErrorNorms &                     e         = cells[cell->active_cell_index()];
+      fe_values.reinit(cell);
+      fe_values[displacement].get_function_values(d, scratch.u);
+      fe_values[displacement].get_function_gradients(d, scratch.grad_u);
+      for (unsigned int q = 0; q < scratch.u.size(); ++q)
         {
-          fe_values.reinit(cell);
-          fe_values[displacement].get_function_values(d, u);
-          fe_values[displacement].get_function_gradients(d, grad_u);
-          for (unsigned int q = 0; q < nq; ++q)
+          e.u_l2 += scratch.u[q].norm_square() * fe_values.JxW(q);
+          e.u_h1_semi += scratch.grad_u[q].norm_square() * fe_values.JxW(q);
+        }
+      // (one extractor per stress row: the Tensor extractor's divergence
+      // is zero for this FESystem's RT components)
+      for (unsigned int m = 0; m < dim; ++m)
+        {
+          const FEValuesExtractors::Vector sigma_row(dim + m * dim);
+          fe_values[sigma_row].get_function_values(d, scratch.row);
+          fe_values[sigma_row].get_function_divergences(d, scratch.div);
+          for (unsigned int q = 0; q < scratch.u.size(); ++q)
             {
-              e.u_l2 += u[q].norm_square() * fe_values.JxW(q);
-              e.u_h1_semi += grad_u[q].norm_square() * fe_values.JxW(q);
-            }
-          // (one extractor per stress row: the Tensor extractor's
-          // divergence is zero for this FESystem's RT components)
-          for (unsigned int m = 0; m < dim; ++m)
-            {
-              const FEValuesExtractors::Vector sigma_row(dim + m * dim);
-              fe_values[sigma_row].get_function_values(d, row);
-              fe_values[sigma_row].get_function_divergences(d, div);
-              for (unsigned int q = 0; q < nq; ++q)
-                {
-                  e.sigma_l2 += row[q].norm_square() * fe_values.JxW(q);
-                  e.sigma_div += div[q] * div[q] * fe_values.JxW(q);
-                }
+              e.sigma_l2 += scratch.row[q].norm_square() * fe_values.JxW(q);
+              e.sigma_div += scratch.div[q] * scratch.div[q] * fe_values.JxW(q);
             }
         }
+    };
+    const auto &dof_handler = discretization.get_dof_handler();
+    WorkStream::run(dof_handler.begin_active(),
+                    dof_handler.end(),
+                    worker,
+                    [](const NoCopy &) {},
+                    Scratch(mapping, discretization.get_fe(), quadrature),
+                    NoCopy());
+    ErrorNorms e;
+    for (const ErrorNorms &c : cells)
+      {
+        e.u_l2 += c.u_l2;
+        e.u_h1_semi += c.u_h1_semi;
+        e.sigma_l2 += c.sigma_l2;
+        e.sigma_div += c.sigma_div;
+      }
     return norms_of_squares(e, discretization.get_communicator());
   }
 

@@ -250,8 +250,9 @@ namespace FoslsContact
   FoslsProblem<dim>::make_initial_guess()
   {
     TimerOutput::Scope t(timer, "Initial guess");
-    InitialGuess<dim>(parameters, scene, *discretization, *transfer, pcout)
-      .compute(qp, solution);
+    const InitialGuess<dim> guess(parameters, scene, *discretization, *transfer, pcout);
+    guess.compute(qp, solution);
+    initial_guess_work = guess.work_units();
     if (load_path())
       {
         load_step_guess = solution;
@@ -269,7 +270,9 @@ namespace FoslsContact
     LevelVector        guess;
     // (quietly: the guess's own violation is not the start's)
     const ConditionalOStream quiet(std::cout, false);
-    InitialGuess<dim>(parameters, scene, *discretization, *transfer, quiet).compute(qp, guess);
+    const InitialGuess<dim> initial_guess(parameters, scene, *discretization, *transfer, quiet);
+    initial_guess.compute(qp, guess);
+    initial_guess_work = initial_guess.work_units();
     discretization->rotate_to_cartesian(L, guess);
     solution.reinit(qp.partitioner);
     solution.copy_locally_owned_data_from(carried);
@@ -466,6 +469,8 @@ namespace FoslsContact
     indicators = std::make_unique<ErrorIndicators<dim>>(*discretization, parameters.weights);
     indicators->compute(solution);
     run_summary.add_solver(summary);
+    if (parameters.solver.initial_guess == Parameters::Solver::InitialGuess::nested_iteration)
+      summary["work_units_initial_guess"] = json_number(initial_guess_work);
     run_summary.add_memory(summary, transfer->memory_consumption());
     if (parameters.solver.cross_check)
       summary["cross_check"] = "{\"functional\": " + json_number(cross_check_functional) +

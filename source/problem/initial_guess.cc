@@ -60,8 +60,14 @@ namespace FoslsContact
     if (level == 0)
       ActiveSetDirect().solve(level_qp, x, level_monitor);
     else
-      SolverChoice<dim>::make(parameters.solver, discretization, transfer, level_qp, level)
-        ->solve(level_qp, x, level_monitor);
+      {
+        const auto solver =
+          SolverChoice<dim>::make(parameters.solver, discretization, transfer, level_qp, level);
+        solver->solve(level_qp, x, level_monitor);
+        if (const auto &mg = solver->statistics().multilevel)
+          for (unsigned int l = 0; l < mg->level_sweeps.size(); ++l)
+            work += double(mg->level_sweeps[l]) * double(mg->level_dofs[l]);
+      }
     return x;
   }
 
@@ -72,6 +78,7 @@ namespace FoslsContact
   {
     const unsigned int L = discretization.finest_level();
     solution.reinit(qp.partitioner);
+    work = 0;
     using IG = Parameters::Solver::InitialGuess;
     switch (parameters.solver.initial_guess)
       {
@@ -122,6 +129,7 @@ namespace FoslsContact
             break;
           }
       }
+    work /= double(discretization.level(L).n_dofs);
     // fixed values are simply set; a penetrating start is worth a note
     double penetration = 0;
     for (unsigned int i = 0; i < qp.n_owned(); ++i)

@@ -230,6 +230,13 @@ namespace FoslsContact
     summary["level_dofs"]   = json_array(dofs);
     summary["level_visits"] = json_array(visits);
     summary["level_time_s"] = json_array(seconds);
+    // the solve's work in sweeps over the finest level (deterministic,
+    // unlike its time)
+    std::vector<std::string> sweeps;
+    for (const auto n : mg->level_sweeps)
+      sweeps.push_back(std::to_string(n));
+    summary["level_sweeps"] = json_array(sweeps);
+    summary["work_units"]   = number(mg->work_units());
     if (parameters.solver.check_coarse_defects)
       {
         summary["coarse_defect_checks"]     = std::to_string(mg->coarse_defect_checks);

@@ -51,6 +51,7 @@ namespace FoslsContact
     multilevel.level_times = counters.level_visits;
     for (unsigned int l = 1; l <= finest; ++l)
       multilevel.level_times[l].seconds -= counters.level_visits[l - 1].seconds;
+    multilevel.level_sweeps             = pre_smoother.sweeps();
     multilevel.coarse_defect_checks     = counters.coarse_defect_checks;
     multilevel.coarse_defect_difference = counters.coarse_defect_difference;
     // (the pre- and post-smoother share their patches)

@@ -393,6 +393,7 @@ namespace FoslsContact
     for (unsigned int step = 0; step < steps; ++step)
       {
         sweep(l, v, r, backward);
+        ++shared->sweeps[l];
         if (symmetric)
           backward = !backward;
       }

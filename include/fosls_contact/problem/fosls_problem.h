@@ -294,6 +294,11 @@ namespace FoslsContact
     double cross_check_solution   = std::numeric_limits<double>::quiet_NaN();
     /** The wall time of the cross check's solve. */
     double time_cross_check = 0;
+    /**
+     * The nested iteration's sweeps on the coarser levels, in sweeps over
+     * the finest level (InitialGuess::work_units()).
+     */
+    double initial_guess_work = 0;
   };
 } // namespace FoslsContact
 

@@ -35,6 +35,13 @@ namespace FoslsContact
      */
     void compute(const ConstrainedQP &qp, LevelVector &solution) const;
 
+    /**
+     * The patch sweeps of the last compute()'s solves on coarser levels
+     * (nested iteration), in sweeps over the finest level: the work the
+     * guess adds to the solve's (SolverStatistics::Multilevel::work_units()).
+     */
+    double work_units() const { return work; }
+
   private:
     /** Solve the problem assembled on level @p level (for initial guesses). */
     LevelVector solve_on_level(const unsigned int level, const LevelVector *start) const;
@@ -46,6 +53,8 @@ namespace FoslsContact
     const Discretization<dim> &      discretization;
     const LevelTransfer<dim> &       transfer;
     const ConditionalOStream &       pcout;
+    /** The sweeps of the coarser levels' solves times their levels' DoFs. */
+    mutable double work = 0;
   };
 } // namespace FoslsContact
 

@@ -130,6 +130,12 @@ namespace FoslsContact
 
     /** Patch steps whose objective change was positive beyond round-off. */
     unsigned int energy_increases() const { return shared->n_increases; }
+    /**
+     * The sweeps over every level so far, by this smoother and those that
+     * share its patches: with the levels' DoFs the work of a solve in
+     * work units (SolverStatistics::Multilevel::level_sweeps).
+     */
+    const std::vector<unsigned long long> &sweeps() const { return shared->sweeps; }
 
     /** The bytes of the packed patches by level (shared by the copies). */
     LevelBytes memory_consumption() const;
@@ -150,6 +156,7 @@ namespace FoslsContact
         , obstacles(n_levels, nullptr)
         , friction(n_levels, nullptr)
         , linear(n_levels, false)
+        , sweeps(n_levels, 0)
       {}
       const PatchRows                   rows;
       std::vector<PackedPatches>        levels;
@@ -157,6 +164,8 @@ namespace FoslsContact
       std::vector<const FrictionTerms *> friction;
       std::vector<bool>                 linear;
       std::atomic<unsigned int>         n_increases{0};
+      /** The sweeps of every level, by all smoothers on these patches. */
+      std::vector<unsigned long long> sweeps;
     };
 
     /** One sweep over the colors of level @p l, backward if @p backward. */

@@ -100,6 +100,24 @@ namespace FoslsContact
        */
       std::vector<SectionTime> level_times;
       /**
+       * The patch sweeps over every level 0..finest (pre- and
+       * post-smoothing, in the cycles and in the Newton steps' projected
+       * smoothing). A sweep over level l costs about level_dofs[l] /
+       * level_dofs[finest] of one over the finest level, the work unit of
+       * multigrid (Brandt): their sum is the work of the solve in fine
+       * sweeps (work_units()).
+       */
+      std::vector<unsigned long long> level_sweeps;
+      /** The sweeps of level_sweeps in sweeps over the finest level. */
+      double
+      work_units() const
+      {
+        double work = 0;
+        for (unsigned int l = 0; l < level_sweeps.size(); ++l)
+          work += double(level_sweeps[l]) * double(level_dofs[l]) / double(level_dofs.back());
+        return work;
+      }
+      /**
        * With Solver/Check coarse defects: the number of second visits that
        * took their coarse defect from the first visit's, and the largest
        * difference to the recomputed one. Both 0 without the check.

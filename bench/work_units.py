@@ -1,0 +1,134 @@
+#!/usr/bin/env python3
+"""The solve in work units: what the monotone multigrid does to reach the
+discretization accuracy, counted in sweeps over the finest level (Brandt's
+work unit: a patch sweep over level l costs level_dofs[l] / level_dofs[finest]
+of one over the finest level; summary.json's level_sweeps and work_units).
+
+For the square (prm/square.prm, levels 6-10) and the cube (prm/cube3d.prm,
+levels 4-6), each with the default solver and stop (discretization
+accuracy) and two starts (Solver/Initial guess):
+- coarse solution (the default): the exact level-1 solution, interpolated;
+- nested iteration: every level solved in turn to its own discretization
+  accuracy, from the coarser level's solution (full multigrid's order of
+  work), its coarser levels' sweeps in work units too
+  (work_units_initial_guess).
+
+It prints, per run, the finest level's iterations and cycles, the work units
+of the finest level's solve and of the coarser levels, the time of the solve
+and of the initial guess, and the contact force; and the targets of issue
+"accuracy per second": at most 2 iterations on the finest level, at most 15
+work units at the square's level 9. Writes doc/work_units_results.md unless
+--no-doc. One process, --threads threads (the counts do not depend on them).
+
+    bench/work_units.py
+    bench/work_units.py --square-levels 6-8 --cube-levels 4-5 --no-doc
+"""
+import argparse
+import os
+import sys
+
+import common
+
+RES = os.path.join(common.RESULTS, "work_units")
+DOC = os.path.join(common.ROOT, "doc", "work_units_results.md")
+STARTS = ["coarse solution", "nested iteration"]
+TARGET_ITERATIONS = 2
+TARGET_WORK_UNITS = 15.0
+TARGET_LEVEL = 9
+
+
+def levels(text):
+    first, _, last = text.partition("-")
+    return list(range(int(first), int(last or first) + 1))
+
+
+def one_run(scene, level, start, threads):
+    out = os.path.join(RES, f"{scene.split('.')[0]}_L{level}_{start.replace(' ', '_')}")
+    s = common.run(scene, {"Geometry/Levels": level, "Solver/Initial guess": start,
+                           "Solver/Threads": threads, "Output/Write vtu": "false",
+                           "Output/Verbose": "false"}, out, common.BIN, 1, threads)
+    sections = s["time_sections_s"]
+    return {"dofs": s["dofs"], "iterations": s["iterations"], "cycles": s["cycles"],
+            "work": s["work_units"], "work_coarser": s.get("work_units_initial_guess", 0.0),
+            "solve_s": sections["Solve"], "guess_s": sections.get("Initial guess", 0.0),
+            "force": s["contact_force"][dim_of(scene) - 1], "fine_sweeps": s["level_sweeps"][-1]}
+
+
+def dim_of(scene):
+    return 3 if "3d" in scene else 2
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--square-levels", type=levels, default=levels("6-10"))
+    p.add_argument("--cube-levels", type=levels, default=levels("4-6"))
+    p.add_argument("--threads", type=int, default=2)
+    p.add_argument("--no-doc", action="store_true", help="print the table only")
+    a = p.parse_args()
+    if not os.path.exists(common.BIN):
+        sys.exit(f"{common.BIN} missing: build it (scripts/setup.sh) or set FOSLS_CONTACT_BIN")
+    os.makedirs(RES, exist_ok=True)
+
+    rows, runs = [], {}
+    for name, scene, ls in [("square", "square.prm", a.square_levels),
+                            ("cube", "cube3d.prm", a.cube_levels)]:
+        for level in ls:
+            for start in STARTS:
+                r = one_run(scene, level, start, a.threads)
+                runs[(name, level, start)] = r
+                rows.append(f"| {name} | {level} | {r['dofs']:,} | {start} | {r['iterations']} | "
+                            f"{r['cycles']} | {r['fine_sweeps']} | {r['work']:.1f} | "
+                            f"{r['work_coarser']:.1f} | {r['work'] + r['work_coarser']:.1f} | "
+                            f"{r['guess_s']:.2f} | {r['solve_s']:.2f} | "
+                            f"{r['solve_s'] / r['work'] * 1e3:.1f} | {r['force']:.10f} |")
+                print(rows[-1], flush=True)
+
+    lines = ["| scene | level | DoFs | initial guess | iterations | cycles | sweeps of the "
+             "finest level | work units, finest level | work units, coarser levels' solves | "
+             "work units, total | initial guess s | solve s | solve ms per work unit | "
+             "contact force |", "|" + "---|" * 14] + rows
+    # the targets, from the runs made
+    targets = ["| target | measured | |", "|---|---|---|"]
+    worst = {}
+    for (name, level, start), r in runs.items():
+        worst[(name, start)] = max(worst.get((name, start), 0), r["iterations"])
+    for (name, start), it in sorted(worst.items()):
+        lv = [l for (n, l, s) in runs if n == name and s == start]
+        targets.append(f"| at most {TARGET_ITERATIONS} iterations on the finest level, {name} "
+                       f"(levels {min(lv)}-{max(lv)}), {start} | at most {it} | "
+                       f"{'met' if it <= TARGET_ITERATIONS else 'missed'} |")
+    for start in STARTS:
+        r = runs.get(("square", TARGET_LEVEL, start))
+        if r:
+            total = r["work"] + r["work_coarser"]
+            targets.append(f"| at most {TARGET_WORK_UNITS:g} work units, square level "
+                           f"{TARGET_LEVEL}, {start} | {total:.1f} | "
+                           f"{'met' if total <= TARGET_WORK_UNITS else 'missed'} |")
+    # how far apart the two starts' forces are, against the mesh's own error
+    diffs = []
+    for (name, level, start), r in runs.items():
+        if start == STARTS[1] and (name, level, STARTS[0]) in runs:
+            f0 = runs[(name, level, STARTS[0])]["force"]
+            diffs.append(f"{name} {level}: {abs(r['force'] - f0) / abs(f0):.1e}")
+    text = ("<!-- generated by bench/work_units.py: do not edit -->\n\n"
+            "# The solve in work units\n\n"
+            f"Generated by `bench/work_units.py`: one process, {a.threads} threads, the default "
+            "solver (the truncated nonsmooth Newton multigrid, W-cycles with 3 pre- and 3 "
+            "post-smoothing sweeps) stopped at discretization accuracy. A work unit is one patch "
+            "sweep over the finest level; a sweep over level l counts level_dofs[l] / "
+            "level_dofs[finest] of one (the exact solves of the coarsest level a cycle reaches "
+            "are not counted: their time is under 1% of the solve's). `iterations` and `cycles` "
+            "are the finest level's; `coarser levels' solves` is the nested iteration's solves "
+            "on levels 2 .. finest - 1 (zero for the coarse solution, whose level-1 solve is "
+            "exact).\n\n" + "\n".join(lines) + "\n\n"
+            "Relative difference of the contact force between the two starts: "
+            + ", ".join(diffs) + ".\n\n## Targets\n\n" + "\n".join(targets) + "\n")
+    print("\n".join(targets))
+    if not a.no_doc:
+        with open(DOC, "w") as f:
+            f.write(text)
+        print(f"wrote {DOC}")
+
+
+if __name__ == "__main__":
+    main()

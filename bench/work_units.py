@@ -13,6 +13,12 @@ accuracy) and two starts (Solver/Initial guess):
   work), its coarser levels' sweeps in work units too
   (work_units_initial_guess).
 
+With --variants also the smoothing: W(3,3) (the default), W(1,1) and
+V(1,1) on the square (level 9), the cube (level 6), the ball (prm/ball3d.prm)
+and the half ball (prm/half_ball.prm), from the default start: work units,
+solve time (the fastest of --runs) and how far J and the contact force move
+from the default's.
+
 It prints, per run, the finest level's iterations and cycles, the work units
 of the finest level's solve and of the coarser levels, the time of the solve
 and of the initial guess, and the contact force; and the targets of issue
@@ -22,6 +28,7 @@ work units at the square's level 9. Writes doc/work_units_results.md unless
 
     bench/work_units.py
     bench/work_units.py --square-levels 6-8 --cube-levels 4-5 --no-doc
+    bench/work_units.py --variants
 """
 import argparse
 import os
@@ -42,20 +49,50 @@ def levels(text):
     return list(range(int(first), int(last or first) + 1))
 
 
-def one_run(scene, level, start, threads):
-    out = os.path.join(RES, f"{scene.split('.')[0]}_L{level}_{start.replace(' ', '_')}")
-    s = common.run(scene, {"Geometry/Levels": level, "Solver/Initial guess": start,
-                           "Solver/Threads": threads, "Output/Write vtu": "false",
-                           "Output/Verbose": "false"}, out, common.BIN, 1, threads)
+# (name, scene, settings) of --variants, and the cycles compared there
+VARIANT_SCENES = [("square", "square.prm", {"Geometry/Levels": 9}),
+                  ("cube", "cube3d.prm", {"Geometry/Levels": 6}),
+                  ("ball", "ball3d.prm", {}),
+                  ("half ball", "half_ball.prm", {})]
+VARIANTS = [("W", 3, 3), ("W", 1, 1), ("V", 1, 1)]
+
+
+def one_run(scene, level, start, threads, settings=None, tag=""):
+    out = os.path.join(RES, f"{scene.split('.')[0]}_L{level}_{start.replace(' ', '_')}{tag}")
+    base = {"Solver/Initial guess": start, "Solver/Threads": threads,
+            "Output/Write vtu": "false", "Output/Verbose": "false"}
+    if level is not None:
+        base["Geometry/Levels"] = level
+    s = common.run(scene, dict(base, **(settings or {})), out, common.BIN, 1, threads)
     sections = s["time_sections_s"]
     return {"dofs": s["dofs"], "iterations": s["iterations"], "cycles": s["cycles"],
             "work": s["work_units"], "work_coarser": s.get("work_units_initial_guess", 0.0),
             "solve_s": sections["Solve"], "guess_s": sections.get("Initial guess", 0.0),
-            "force": s["contact_force"][dim_of(scene) - 1], "fine_sweeps": s["level_sweeps"][-1]}
+            "force": s["contact_force"][s["dimension"] - 1], "fine_sweeps": s["level_sweeps"][-1],
+            "functional": s["functional"], "rate": s["rate_per_cycle"]}
 
 
-def dim_of(scene):
-    return 3 if "3d" in scene else 2
+def variants(threads, runs):
+    """The smoothing variants' table (markdown lines)."""
+    lines = ["| scene | DoFs | cycle | iterations | cycles | rate per cycle | work units | "
+             "solve s | J, relative to W(3,3)'s | contact force, relative to W(3,3)'s |",
+             "|" + "---|" * 10]
+    for name, scene, settings in VARIANT_SCENES:
+        base = None
+        for cycle, pre, post in VARIANTS:
+            v = {"Solver/Cycle": cycle, "Solver/Pre smoothing": pre,
+                 "Solver/Post smoothing": post}
+            r = min((one_run(scene, settings.get("Geometry/Levels"), STARTS[0], threads,
+                             dict(settings, **v), f"_{cycle}{pre}{post}")
+                     for _ in range(runs)), key=lambda r: r["solve_s"])
+            base = base or r
+            lines.append(f"| {name} | {r['dofs']:,} | {cycle}({pre},{post}) | {r['iterations']} | "
+                         f"{r['cycles']} | {r['rate']:.2f} | {r['work']:.1f} | "
+                         f"{r['solve_s']:.2f} | "
+                         f"{abs(r['functional'] - base['functional']) / base['functional']:.1e} | "
+                         f"{abs(r['force'] - base['force']) / abs(base['force']):.1e} |")
+            print(lines[-1], flush=True)
+    return lines
 
 
 def main():
@@ -63,6 +100,9 @@ def main():
     p.add_argument("--square-levels", type=levels, default=levels("6-10"))
     p.add_argument("--cube-levels", type=levels, default=levels("4-6"))
     p.add_argument("--threads", type=int, default=2)
+    p.add_argument("--variants", action="store_true",
+                   help="also W(1,1) and V(1,1) against the default W(3,3)")
+    p.add_argument("--runs", type=int, default=2, help="runs per variant (the fastest counts)")
     p.add_argument("--no-doc", action="store_true", help="print the table only")
     a = p.parse_args()
     if not os.path.exists(common.BIN):
@@ -123,6 +163,12 @@ def main():
             "exact).\n\n" + "\n".join(lines) + "\n\n"
             "Relative difference of the contact force between the two starts: "
             + ", ".join(diffs) + ".\n\n## Targets\n\n" + "\n".join(targets) + "\n")
+    if a.variants:
+        text += ("\n## Fewer smoothing sweeps\n\nW(3,3) (the default), W(1,1) and V(1,1) "
+                 "(Solver/Cycle, Pre smoothing, Post smoothing), the default start and stop; "
+                 f"the solve time is the fastest of {a.runs} runs. The last two columns: how far "
+                 "J and the contact force (its last component) stop from W(3,3)'s.\n\n"
+                 + "\n".join(variants(a.threads, a.runs)) + "\n")
     print("\n".join(targets))
     if not a.no_doc:
         with open(DOC, "w") as f:

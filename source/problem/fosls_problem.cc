@@ -250,7 +250,7 @@ namespace FoslsContact
   FoslsProblem<dim>::make_initial_guess()
   {
     TimerOutput::Scope t(timer, "Initial guess");
-    const InitialGuess<dim> guess(parameters, scene, *discretization, *transfer, pcout);
+    InitialGuess<dim> guess(parameters, scene, *discretization, *transfer, pcout);
     guess.compute(qp, solution);
     initial_guess_work = guess.work_units();
     if (load_path())
@@ -270,7 +270,7 @@ namespace FoslsContact
     LevelVector        guess;
     // (quietly: the guess's own violation is not the start's)
     const ConditionalOStream quiet(std::cout, false);
-    const InitialGuess<dim> initial_guess(parameters, scene, *discretization, *transfer, quiet);
+    InitialGuess<dim> initial_guess(parameters, scene, *discretization, *transfer, quiet);
     initial_guess.compute(qp, guess);
     initial_guess_work = initial_guess.work_units();
     discretization->rotate_to_cartesian(L, guess);
@@ -747,6 +747,7 @@ namespace FoslsContact
     TimerOutput::Scope t(timer, "Initial guess");
     const unsigned int L    = discretization->finest_level();
     const auto &       fine = discretization->level(L);
+    initial_guess_work      = 0; // (no coarser solves)
     solution.reinit(qp.partitioner);
     solution.copy_locally_owned_data_from(carried);
     update_ghosts(solution);

@@ -42,7 +42,7 @@ namespace FoslsContact
 
   template <int dim>
   LevelVector
-  InitialGuess<dim>::solve_on_level(const unsigned int level, const LevelVector *start) const
+  InitialGuess<dim>::solve_on_level(const unsigned int level, const LevelVector *start)
   {
     ConstrainedQP level_qp;
     level_qp.reinit(discretization.level(level));
@@ -74,7 +74,7 @@ namespace FoslsContact
 
   template <int dim>
   void
-  InitialGuess<dim>::compute(const ConstrainedQP &qp, LevelVector &solution) const
+  InitialGuess<dim>::compute(const ConstrainedQP &qp, LevelVector &solution)
   {
     const unsigned int L = discretization.finest_level();
     solution.reinit(qp.partitioner);

@@ -33,7 +33,7 @@ namespace FoslsContact
      * @p solution (rotated); notes a start that violates the contact
      * constraints (the solver projects it).
      */
-    void compute(const ConstrainedQP &qp, LevelVector &solution) const;
+    void compute(const ConstrainedQP &qp, LevelVector &solution);
 
     /**
      * The patch sweeps of the last compute()'s solves on coarser levels
@@ -44,7 +44,7 @@ namespace FoslsContact
 
   private:
     /** Solve the problem assembled on level @p level (for initial guesses). */
-    LevelVector solve_on_level(const unsigned int level, const LevelVector *start) const;
+    LevelVector solve_on_level(const unsigned int level, const LevelVector *start);
     /** Interpolate a rotated level-l vector to level l+1 (rotated). */
     LevelVector prolongate_rotated(const unsigned int to_level, const LevelVector &coarse) const;
 
@@ -54,7 +54,7 @@ namespace FoslsContact
     const LevelTransfer<dim> &       transfer;
     const ConditionalOStream &       pcout;
     /** The sweeps of the coarser levels' solves times their levels' DoFs. */
-    mutable double work = 0;
+    double work = 0;
   };
 } // namespace FoslsContact
 

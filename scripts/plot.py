@@ -120,9 +120,12 @@ def plot_pressure(plt, summary, contact, out):
             ax.set_xlim(lo, span)
             stress = (summary.get("units") or {}).get("stress", "")
             stress = " " + stress if stress else ""
+            # (null where Hertz's pressure is 0 at every contact vertex)
+            error = hertz["pressure_error"]
             ax.set_title("contact pressure; Hertz's peak %.4g%s, computed %.4g%s, "
-                         "l2 error %.3g" % (hertz["p0"], stress, hertz["peak"], stress,
-                                            hertz["pressure_error"]), fontsize=9)
+                         "l2 error %s" % (hertz["p0"], stress, hertz["peak"], stress,
+                                          "none" if error is None else "%.3g" % error),
+                         fontsize=9)
         ax.set_xlabel(label)
         ax.set_ylabel("contact pressure -sigma_nn" + unit_label(summary, "stress"))
         ax.legend(fontsize=8)

@@ -101,8 +101,14 @@ namespace FoslsContact
         if (row[ContactRow<dim>::in_contact] == 0 && distance(p) > edge_inside)
           edge_outside = std::min(edge_outside, distance(p));
       }
-    pressure_error          = norm > 0 ? std::sqrt(difference / norm) : 0.;
-    pressure_error_boundary = norm_boundary > 0 ? std::sqrt(difference_boundary / norm_boundary) : 0.;
+    // (where Hertz's pressure is 0 at every contact vertex, without a
+    // force or with a zone between the vertices, a relative error is not
+    // defined: it is NaN, null in summary.json, and not 0, which would
+    // read as a perfect match)
+    const double undefined  = std::numeric_limits<double>::quiet_NaN();
+    pressure_error          = norm > 0 ? std::sqrt(difference / norm) : undefined;
+    pressure_error_boundary = norm_boundary > 0 ? std::sqrt(difference_boundary / norm_boundary) :
+                                                  undefined;
     // (a peak on the contact point itself, up to round-off)
     constexpr double round_off = 1e-12;
     if (peak_r < round_off * R)
@@ -124,9 +130,12 @@ namespace FoslsContact
         << ", p0 = " << p0 << "\n"
         << "       computed: contact edge between " << edge_inside << " and "
         << edge_outside << ", peak pressure " << peak << " at r = " << peak_r
-        << ", pressure error " << std::setprecision(3) << pressure_error
-        << " (relative l2 at the contact vertices), " << pressure_error_boundary
-        << " (relative L2 on the contact boundary)";
+        << std::setprecision(3);
+    if (std::isnan(pressure_error))
+      out << ", no pressure error (Hertz's pressure is 0 at every contact vertex)";
+    else
+      out << ", pressure error " << pressure_error << " (relative l2 at the contact vertices), "
+          << pressure_error_boundary << " (relative L2 on the contact boundary)";
     return out.str();
   }
 

@@ -74,6 +74,14 @@ def run(scene, settings, out, binary=None, processes=1, threads=None):
     return summary
 
 
+def levels(text):
+    """"6-10" or "6,7,8" -> a sorted list of levels (the --levels options)."""
+    if "-" in text:
+        first, last = (int(x) for x in text.split("-"))
+        return list(range(first, last + 1))
+    return sorted(int(x) for x in text.split(","))
+
+
 def load_template(path):
     """The blocks of the report template @p path: {name: string.Template}. A
     block is the text between its line `@@ name` and the next such line,

@@ -65,7 +65,7 @@ import sys
 import time
 
 import common
-from common import BIN, RESULTS, ROOT, launch
+from common import BIN, RESULTS, ROOT, launch, levels
 
 RES = os.path.join(RESULTS, "peer")
 PEER_SRC = os.path.normpath(os.path.join(ROOT, "..", "shared", "peers", "primal_square"))
@@ -78,14 +78,6 @@ STIFF = "1e4"
 # which the largest ratio is sought
 ERRORS = (1e-4, 5e-5, 2e-5, 1e-5)
 INTERVAL = (1e-5, 1e-4)
-
-
-def levels(text):
-    """"6-10" or "6,7,8" -> a sorted list of levels."""
-    if "-" in text:
-        first, last = (int(x) for x in text.split("-"))
-        return list(range(first, last + 1))
-    return sorted(int(x) for x in text.split(","))
 
 
 def arguments():

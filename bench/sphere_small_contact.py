@@ -29,14 +29,9 @@ TARGET_ERROR = 0.01
 TARGET_SECONDS = 600.
 
 
-def levels(text):
-    first, _, last = text.partition("-")
-    return range(int(first), int(last or first) + 1)
-
-
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    p.add_argument("--levels", type=levels, default=levels("4-7"),
+    p.add_argument("--levels", type=common.levels, default=common.levels("4-7"),
                    help="the uniform levels (default 4-7)")
     p.add_argument("--bin", default=common.BIN)
     p.add_argument("--no-doc", action="store_true", help="print the tables only")

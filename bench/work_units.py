@@ -44,11 +44,6 @@ TARGET_WORK_UNITS = 15.0
 TARGET_LEVEL = 9
 
 
-def levels(text):
-    first, _, last = text.partition("-")
-    return list(range(int(first), int(last or first) + 1))
-
-
 # (name, scene, settings) of --variants, and the cycles compared there
 VARIANT_SCENES = [("square", "square.prm", {"Geometry/Levels": 9}),
                   ("cube", "cube3d.prm", {"Geometry/Levels": 6}),
@@ -103,8 +98,8 @@ def variants(threads, runs):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    p.add_argument("--square-levels", type=levels, default=levels("6-10"))
-    p.add_argument("--cube-levels", type=levels, default=levels("4-6"))
+    p.add_argument("--square-levels", type=common.levels, default=common.levels("6-10"))
+    p.add_argument("--cube-levels", type=common.levels, default=common.levels("4-6"))
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--variants", action="store_true",
                    help="also W(1,1) and V(1,1) against the default W(3,3)")

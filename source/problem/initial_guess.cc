@@ -64,9 +64,9 @@ namespace FoslsContact
         const auto solver =
           SolverChoice<dim>::make(parameters.solver, discretization, transfer, level_qp, level);
         solver->solve(level_qp, x, level_monitor);
+        // (the level's work units times its DoFs: sweeps times DoFs)
         if (const auto &mg = solver->statistics().multilevel)
-          for (unsigned int l = 0; l < mg->level_sweeps.size(); ++l)
-            work += double(mg->level_sweeps[l]) * double(mg->level_dofs[l]);
+          work += mg->work_units() * double(mg->level_dofs.back());
       }
     return x;
   }

@@ -207,7 +207,11 @@ namespace FoslsContact
     // The trapezoidal rule on a face gives each of its 2^(dim-1) vertices
     // the weight |F| / 2^(dim-1); a vertex whose tangential displacement is
     // prescribed (a Dirichlet or roller vertex) has no slip DoF, and its
-    // term w |x - p| is a constant of J, left out.
+    // term w |x - p| is a constant of J, left out. A 3D roller vertex with
+    // one tangential coordinate prescribed keeps the other as a slip DoF
+    // alone (the other entry no DoF): its term is w |x_i - p_i|, exact
+    // where the prescribed coordinate does not move in the step (a
+    // symmetry plane).
     for (const auto &face : boundary.contact_faces)
       {
         FrictionFace<dim> friction;
@@ -222,11 +226,12 @@ namespace FoslsContact
             if (vertex == data.vertex_dofs.end())
               continue;
             std::array<types::global_dof_index, dim - 1> slip;
-            bool                                         slips = true;
+            bool                                         slips = false;
             for (unsigned int k = 1; k < dim; ++k)
               {
-                slip[k - 1] = vertex->second[k];
-                slips       = slips && data.role[slip[k - 1]] == DoFRole::slip;
+                const bool free_k = data.role[vertex->second[k]] == DoFRole::slip;
+                slip[k - 1]       = free_k ? vertex->second[k] : numbers::invalid_dof_index;
+                slips             = slips || free_k;
               }
             if (slips)
               friction.slips.push_back(slip);

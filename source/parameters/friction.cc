@@ -17,20 +17,21 @@ namespace FoslsContact
                         "fixed point of Tresca problems). Friction acts on the "
                         "tangential displacement of a load step relative to the step "
                         "before (Data/Load steps), the first step's relative to the "
-                        "undeformed body. Needs a contact boundary and 2D; the monotone "
-                        "multigrid takes it with Solver/Krylov steps > 0 (its Newton "
-                        "step), the active set method and projected gauss seidel as "
-                        "they are.");
+                        "undeformed body. In 3D the friction is isotropic: the "
+                        "tangential traction lies in a disc, the slip enters by its "
+                        "length. Needs a contact boundary; the monotone multigrid takes "
+                        "it with Solver/Krylov steps > 0 (its Newton step), projected "
+                        "gauss seidel as it is, the active set method in 2D.");
       prm.declare_entry("Bound",
                         "0",
                         Patterns::Anything(),
                         "Tresca: the slip bound s >= 0, a stress in the scene's units: "
-                        "an expression in x, y that may use Data/Constants.");
+                        "an expression in x, y (and z) that may use Data/Constants.");
       prm.declare_entry("Coefficient",
                         "0",
                         Patterns::Anything(),
                         "Coulomb: the friction coefficient f >= 0: an expression in x, y "
-                        "that may use Data/Constants.");
+                        "(and z) that may use Data/Constants.");
       prm.declare_entry("Fixed point iterations",
                         "50",
                         Patterns::Integer(1),

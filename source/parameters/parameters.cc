@@ -90,9 +90,10 @@ namespace FoslsContact
           AssertThrow(!boundary_conditions.contact_ids.empty(),
                       ExcMessage(law + " needs a contact boundary ('Boundary conditions/"
                                        "Contact boundary ids'): friction acts on contact faces only"));
-          AssertThrow(geometry.dimension == 2,
-                      ExcMessage(law + " needs Dimension = 2: the isotropic friction "
-                                       "disc of a 3D contact is not built"));
+          AssertThrow(geometry.dimension == 2 || solver.type != Solver::Type::active_set,
+                      ExcMessage(law + " in 3D with 'Solver/Type' = active set: its semismooth "
+                                       "Newton method is built for the 2D bounds; take monotone "
+                                       "multigrid or projected Gauss-Seidel"));
           // (the Coulomb fixed point stops when the slip bounds of two
           // Tresca solutions differ by less than its tolerance, so they must
           // be solved closer than that: stopped at the discretization

@@ -43,14 +43,31 @@ namespace FoslsContact
     // Every process sees all the faces at the vertices it owns (the ghost
     // layer), so their sums are complete; the ghost entries come from
     // their owners.
+    // In 3D the two tangential coordinates of a face or vertex are a pair
+    // (FrictionTerms::partner), on every process (a collective property).
+    if (dim == 3)
+      friction.partner.assign(qp.role.size(), FrictionTerms::no_partner);
+    const auto pair = [&](const auto &dofs) {
+      if (dim == 3 && dofs[0] != numbers::invalid_dof_index &&
+          dofs[dim - 2] != numbers::invalid_dof_index)
+        {
+          friction.partner[dofs[0]]       = dofs[dim - 2];
+          friction.partner[dofs[dim - 2]] = dofs[0];
+        }
+    };
     for (unsigned int f = 0; f < fine.friction_faces.size(); ++f)
       {
         const auto &face = fine.friction_faces[f];
         for (const auto dof : face.traction)
           friction.traction_bounds.local_element(dof) = s[f];
+        pair(face.traction);
         for (const auto &slip : face.slips)
-          for (const auto dof : slip)
-            friction.slip_weights.local_element(dof) += c_compl * face.weight * s[f];
+          {
+            for (const auto dof : slip)
+              if (dof != numbers::invalid_dof_index)
+                friction.slip_weights.local_element(dof) += c_compl * face.weight * s[f];
+            pair(slip);
+          }
       }
     update_ghosts(friction.traction_bounds);
     update_ghosts(friction.slip_weights);

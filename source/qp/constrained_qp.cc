@@ -2,6 +2,7 @@
 
 #include <fosls_contact/qp/accurate_sums.h>
 #include <fosls_contact/qp/constrained_qp.h>
+#include <fosls_contact/qp/tangential_pair.h>
 
 #include <algorithm>
 #include <cmath>
@@ -44,8 +45,18 @@ namespace FoslsContact
     double term = 0;
     for (unsigned int i = 0; i < n_owned(); ++i)
       if (role[i] == DoFRole::slip)
-        term += friction.slip_weights.local_element(i) *
-                std::abs(x.local_element(i) - friction.slip_references.local_element(i));
+        {
+          // (a 3D pair once, by its first entry: the Euclidean norm)
+          const unsigned int j = friction.partner_of(i);
+          if (j != FrictionTerms::no_partner && j < i)
+            continue;
+          const double z = x.local_element(i) - friction.slip_references.local_element(i);
+          const double z_j =
+            j == FrictionTerms::no_partner ?
+              0. :
+              x.local_element(j) - friction.slip_references.local_element(j);
+          term += friction.slip_weights.local_element(i) * std::hypot(z, z_j);
+        }
     return Utilities::MPI::sum(term, get_communicator());
   }
 
@@ -105,8 +116,17 @@ namespace FoslsContact
         x.local_element(i) = std::min(x.local_element(i), ub(i));
       else if (role[i] == DoFRole::traction && has_friction())
         {
-          const double s = friction.traction_bounds.local_element(i);
-          x.local_element(i) = std::max(-s, std::min(x.local_element(i), s));
+          const double       s = friction.traction_bounds.local_element(i);
+          const unsigned int j = friction.partner_of(i);
+          if (j == FrictionTerms::no_partner)
+            x.local_element(i) = std::max(-s, std::min(x.local_element(i), s));
+          else if (i < j)
+            {
+              const auto z =
+                TangentialPair::project_to_disc({x.local_element(i), x.local_element(j)}, s);
+              x.local_element(i) = z[0];
+              x.local_element(j) = z[1];
+            }
         }
   }
 
@@ -121,8 +141,13 @@ namespace FoslsContact
       else if (role[i] == DoFRole::bounded)
         v = std::max(v, x.local_element(i) - upper_bounds.local_element(i));
       else if (role[i] == DoFRole::traction && has_friction())
-        v = std::max(v,
-                     std::abs(x.local_element(i)) - friction.traction_bounds.local_element(i));
+        {
+          const unsigned int j = friction.partner_of(i);
+          v = std::max(v,
+                       std::hypot(x.local_element(i),
+                                  j == FrictionTerms::no_partner ? 0. : x.local_element(j)) -
+                         friction.traction_bounds.local_element(i));
+        }
     return Utilities::MPI::max(v, get_communicator());
   }
 
@@ -212,9 +237,27 @@ namespace FoslsContact
               }
             case DoFRole::traction:
               {
+                const double       s = friction.traction_bounds.local_element(i);
+                const unsigned int j = friction.partner_of(i);
+                if (j != FrictionTerms::no_partner)
+                  {
+                    // |(x_i, x_j)| <= s: g = -mu x / |x| with mu >= 0 on
+                    // the circle, g = 0 inside it (per entry: g_i less
+                    // its part along x, and the multiplier's sign)
+                    const double length = std::hypot(xi, x.local_element(j));
+                    r.feasibility = std::max(r.feasibility, std::max(0., length - s) / bound_scale);
+                    if (length < s * (1 - 1e-12))
+                      {
+                        r.stationarity = std::max(r.stationarity, std::abs(gi));
+                        break;
+                      }
+                    const double along = (gi * xi + g.local_element(j) * x.local_element(j)) / length;
+                    r.stationarity =
+                      std::max({r.stationarity, std::abs(gi - along * xi / length), std::max(0., along)});
+                    break;
+                  }
                 // -s <= x_i <= s: a multiplier of either sign, each of
                 // which must vanish away from its bound
-                const double s = friction.traction_bounds.local_element(i);
                 r.feasibility  = std::max(r.feasibility, std::max(0., std::abs(xi) - s) / bound_scale);
                 r.complementarity =
                   std::max({r.complementarity,
@@ -226,8 +269,21 @@ namespace FoslsContact
               {
                 // 0 in g_i + w_i d|x_i - p_i|: g_i = -w_i sign(x_i - p_i), or
                 // |g_i| <= w_i at x_i = p_i
-                const double w = friction.slip_weights.local_element(i);
-                const double d = xi - friction.slip_references.local_element(i);
+                const double       w = friction.slip_weights.local_element(i);
+                const double       d = xi - friction.slip_references.local_element(i);
+                const unsigned int j = friction.partner_of(i);
+                if (j != FrictionTerms::no_partner)
+                  {
+                    // 0 in g + w d|z| for the pair z: g = -w z / |z|, or
+                    // |g| <= w at z = 0
+                    const double d_j    = x.local_element(j) - friction.slip_references.local_element(j);
+                    const double length = std::hypot(d, d_j);
+                    r.stationarity =
+                      std::max(r.stationarity,
+                               length > 0 ? std::abs(gi + w * d / length) :
+                                            std::max(0., std::hypot(gi, g.local_element(j)) - w));
+                    break;
+                  }
                 r.stationarity = std::max(r.stationarity,
                                           d > 0 ? std::abs(gi + w) :
                                           d < 0 ? std::abs(gi - w) :

@@ -154,7 +154,19 @@ namespace FoslsContact
     if (qp.has_friction())
       friction = {gather(qp.friction.traction_bounds),
                   gather(qp.friction.slip_weights),
-                  gather(qp.friction.slip_references)};
+                  gather(qp.friction.slip_references),
+                  {}};
+    // (the pairs of 3D friction in global indices, which are those of the
+    // gathered problem: both entries of a pair have one owner)
+    std::vector<std::vector<unsigned int>> partner_parts;
+    if (qp.friction.has_pairs())
+      {
+        std::vector<unsigned int> mine(p.locally_owned_size(), FrictionTerms::no_partner);
+        for (unsigned int i = 0; i < mine.size(); ++i)
+          if (qp.friction.partner[i] != FrictionTerms::no_partner)
+            mine[i] = p.local_to_global(qp.friction.partner[i]);
+        partner_parts = collect(mine);
+      }
     // (an error of the holder alone, its memory, stops every process)
     CollectiveError::run(comm, [&]() {
       if (!holder)
@@ -168,6 +180,8 @@ namespace FoslsContact
       serial.fixed_values      = fixed;
       serial.upper_bounds      = ub;
       serial.friction          = friction;
+      for (const auto &part : partner_parts)
+        serial.friction.partner.insert(serial.friction.partner.end(), part.begin(), part.end());
       serial.constant          = qp.constant;
       serial.dimension         = qp.dimension;
       serial.role              = gathered_roles(role_parts);

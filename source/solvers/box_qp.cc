@@ -155,7 +155,8 @@ namespace FoslsContact
   void
   BoxQP::solve_reduced(const std::vector<unsigned int> &free,
                        const Vector<double> &           rhs,
-                       Vector<double> &                 sol) const
+                       Vector<double> &                 sol,
+                       const bool                       from_inverse) const
   {
     sol.reinit(free.size());
     if (free.empty())
@@ -163,6 +164,42 @@ namespace FoslsContact
     if (free.size() == matrix.m())
       {
         inverse.vmult(sol, rhs);
+        return;
+      }
+    const unsigned int n = matrix.m(), n_held = n - free.size();
+    if (from_inverse && n_held <= max_held_from_inverse)
+      {
+        // M_FF^{-1} = G_FF - G_FH G_HH^{-1} G_HF with G = M^{-1} and H the
+        // held entries: O(n^2) instead of a new factorization
+        std::vector<unsigned int> held;
+        std::vector<bool>         is_free(n, false);
+        for (const unsigned int i : free)
+          is_free[i] = true;
+        for (unsigned int i = 0; i < n; ++i)
+          if (!is_free[i])
+            held.push_back(i);
+        FullMatrix<double> G_hh(n_held, n_held);
+        Vector<double>     t(n_held), u(n_held);
+        for (unsigned int a = 0; a < n_held; ++a)
+          {
+            for (unsigned int b = 0; b < n_held; ++b)
+              G_hh(a, b) = inverse(held[a], held[b]);
+            double ta = 0;
+            for (unsigned int c = 0; c < free.size(); ++c)
+              ta += inverse(held[a], free[c]) * rhs[c];
+            t[a] = ta;
+          }
+        invert_spd(G_hh);
+        G_hh.vmult(u, t);
+        for (unsigned int c = 0; c < free.size(); ++c)
+          {
+            double value = 0;
+            for (unsigned int e = 0; e < free.size(); ++e)
+              value += inverse(free[c], free[e]) * rhs[e];
+            for (unsigned int a = 0; a < n_held; ++a)
+              value -= inverse(free[c], held[a]) * u[a];
+            sol[c] = value;
+          }
         return;
       }
     FullMatrix<double> M_ff(free.size(), free.size());
@@ -181,7 +218,8 @@ namespace FoslsContact
                              const double *      q,
                              const double *      w,
                              double *            c,
-                             std::vector<Bound> &where) const
+                             std::vector<Bound> &where,
+                             const bool          from_inverse) const
   {
     const unsigned int n = matrix.m();
     where.assign(n, Bound::none);
@@ -191,7 +229,10 @@ namespace FoslsContact
     for (unsigned int i = 0; i < n; ++i)
       {
         c[i] = 0;
-        if (w[i] > 0)
+        // (an entry with lo_i = hi_i = 0 is held there throughout)
+        if (lo[i] == hi[i])
+          where[i] = Bound::upper;
+        else if (w[i] > 0)
           {
             if (q[i] == 0)
               where[i] = Bound::kink;
@@ -225,7 +266,7 @@ namespace FoslsContact
               if (where[j] != Bound::none)
                 rhs[a] -= matrix(i, j) * trial[j];
           }
-        solve_reduced(free, rhs, sol);
+        solve_reduced(free, rhs, sol, from_inverse);
         for (unsigned int a = 0; a < free.size(); ++a)
           trial[free[a]] = sol[a];
 
@@ -266,7 +307,7 @@ namespace FoslsContact
         double       most   = 0;
         unsigned int leaves = numbers::invalid_unsigned_int;
         for (unsigned int i = 0; i < n; ++i)
-          if (where[i] != Bound::none)
+          if (where[i] != Bound::none && lo[i] != hi[i])
             {
               double mci = 0;
               for (unsigned int j = 0; j < n; ++j)

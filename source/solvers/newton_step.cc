@@ -1,6 +1,7 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
+#include <fosls_contact/qp/tangential_pair.h>
 #include <fosls_contact/solvers/newton_step.h>
 
 #include <algorithm>
@@ -16,10 +17,35 @@ namespace FoslsContact
      * A restricted to the inactive set: the rows and columns of the fixed
      * DoFs are 0 (@p fixed: the owned ones).
      */
+    /**
+     * The 3D friction pairs that move along one direction only:
+     * v_pair <- (v_pair . u) u (owned DoFs).
+     */
+    void
+    project_pairs(const std::vector<PairDirection> &along, LevelVector &v)
+    {
+      for (const auto &[i, j, u, kappa] : along)
+        {
+          (void)kappa;
+          const double a     = v.local_element(i) * u[0] + v.local_element(j) * u[1];
+          v.local_element(i) = a * u[0];
+          v.local_element(j) = a * u[1];
+        }
+    }
+
+    /**
+     * The Newton matrix of the linear problem, A restricted to the inactive
+     * set (the rows and columns of the fixed DoFs are 0, @p fixed: the
+     * owned ones) and to the directions of the pairs that move along one
+     * (@p along), plus the curvature kappa u u^T of the pairs' norms and
+     * circles (@p curved).
+     */
     struct TruncatedOperator
     {
       const SparseMatrix<double> &                A;
       const std::vector<types::global_dof_index> &fixed;
+      const std::vector<PairDirection> &          along;
+      const std::vector<PairDirection> &          curved;
       mutable LevelVector                         tmp;
       void
       vmult(LevelVector &dst, const LevelVector &src) const
@@ -27,9 +53,17 @@ namespace FoslsContact
         tmp = src;
         for (const auto i : fixed)
           tmp.local_element(i) = 0;
+        project_pairs(along, tmp);
         FoslsContact::vmult(A, dst, tmp);
+        for (const auto &[i, j, u, kappa] : curved)
+          {
+            const double a = kappa * (tmp.local_element(i) * u[0] + tmp.local_element(j) * u[1]);
+            dst.local_element(i) += a * u[0];
+            dst.local_element(j) += a * u[1];
+          }
         for (const auto i : fixed)
           dst.local_element(i) = 0;
+        project_pairs(along, dst);
       }
     };
 
@@ -37,12 +71,26 @@ namespace FoslsContact
     template <typename Cycle>
     struct CyclePreconditioner
     {
-      Cycle cycle;
+      Cycle                             cycle;
+      const std::vector<PairDirection> &along;
+      /** Whether the problem has 3D friction pairs (on every process alike). */
+      const bool                        pairs;
+      mutable LevelVector               tmp;
       void
       vmult(LevelVector &dst, const LevelVector &src) const
       {
         dst = 0;
-        cycle(src, dst);
+        if (!pairs)
+          {
+            cycle(src, dst);
+            return;
+          }
+        // (P B P with the projection P onto the pairs' directions: SPD on
+        // the subspace CG works in)
+        tmp = src;
+        project_pairs(along, tmp);
+        cycle(tmp, dst);
+        project_pairs(along, dst);
       }
     };
   } // namespace
@@ -102,7 +150,13 @@ namespace FoslsContact
     const bool          friction = qp.has_friction();
     linear_role                  = qp.role;
     slope.assign(qp.n_owned(), 0.);
+    pair_directions.clear();
+    pair_curvatures.clear();
+    on_circle.assign(qp.n_owned(), false);
     for (unsigned int i = 0; i < qp.role.size(); ++i)
+      if (friction && qp.friction.partner_of(i) != FrictionTerms::no_partner)
+        set_pair_role(qp, x_local, r, i);
+      else
       switch (qp.role[i])
         {
           case DoFRole::bounded:
@@ -138,6 +192,115 @@ namespace FoslsContact
 
 
   template <int dim>
+  void
+  NewtonStep<dim>::set_pair_role(const ConstrainedQP &qp,
+                                 const LocalElements &x,
+                                 const LocalElements &r,
+                                 const unsigned int   i)
+  {
+    // A 3D pair (FrictionTerms::partner) is the Newton step of the pair's
+    // own nonsmooth term at the iterate:
+    // - a traction pair inside its disc is free;
+    // - one on its circle whose multiplier mu = r . x / |x| >= 0 pushes it
+    //   outwards moves along the circle's tangent t only, with the
+    //   curvature mu / s of the circle (the Hessian of the Lagrangian);
+    // - a slip pair at its reference is held where the norm's kink holds
+    //   it (|r| <= w), else it starts to slip along r with the slope w;
+    // - a sliding slip pair z = x - p != 0 is free with the gradient
+    //   w z / |z| of the norm and its curvature w / |z| across z.
+    // The angle of a traction on its circle and the direction of a slip
+    // are continuous unknowns set by the whole elastic field: held, they
+    // are left to the smoother alone, whose corrections are local, and
+    // without the curvature the direction overshoots them and the line
+    // search cuts the steps short (doc/method.md section 7.7). A curvature above curvature_limit times the pair's
+    // diagonal of A holds its direction instead: a stiff local mode,
+    // which the smoother's pair blocks take, and which would cost the
+    // preconditioned CG (the cycle does not see the curvature) many steps.
+    constexpr double   curvature_limit = 10;
+    const unsigned int j               = qp.friction.partner_of(i);
+    if (j < i)
+      return;
+    const TangentialPair::Vector2 xp{x(i), x(j)}, rp{r(i), r(j)};
+    const bool                    owned = i < qp.n_owned();
+    const double diagonal = owned ? std::max(qp.matrix.diag_element(i), qp.matrix.diag_element(j)) : 0.;
+    bool         held     = false;
+    if (qp.role[i] == DoFRole::traction)
+      {
+        const double s      = qp.friction.traction_bounds.local_element(i);
+        const double length = TangentialPair::norm(xp);
+        const double mu     = length > 0 ? (rp[0] * xp[0] + rp[1] * xp[1]) / length : 0.;
+        if (length >= s * (1 - 1e-12) && mu >= 0)
+          {
+            const double kappa = s > 0 ? mu / s : std::numeric_limits<double>::infinity();
+            held               = !(kappa <= curvature_limit * diagonal) || length == 0;
+            if (!held && owned)
+              {
+                const TangentialPair::Vector2 t{-xp[1] / length, xp[0] / length};
+                pair_directions.push_back({i, j, t, 0.});
+                pair_curvatures.push_back({i, j, t, kappa});
+                on_circle[i] = on_circle[j] = true;
+              }
+          }
+      }
+    else
+      {
+        const double                  w = qp.friction.slip_weights.local_element(i);
+        const TangentialPair::Vector2 z{xp[0] - qp.friction.slip_references.local_element(i),
+                                        xp[1] - qp.friction.slip_references.local_element(j)};
+        const double                  length = TangentialPair::norm(z);
+        held = length == 0 && TangentialPair::norm(rp) <= w;
+        if (!held && owned)
+          {
+            const TangentialPair::Vector2 toward = length == 0 ? rp : z;
+            const double                  size   = TangentialPair::norm(toward);
+            const TangentialPair::Vector2 u{toward[0] / size, toward[1] / size};
+            slope[i]           = w * u[0];
+            slope[j]           = w * u[1];
+            const double kappa = length > 0 ? w / length : std::numeric_limits<double>::infinity();
+            if (kappa <= curvature_limit * diagonal)
+              pair_curvatures.push_back({i, j, {-u[1], u[0]}, kappa});
+            else
+              pair_directions.push_back({i, j, u, 0.});
+          }
+      }
+    linear_role[i] = linear_role[j] = held ? DoFRole::fixed : DoFRole::free;
+  }
+
+
+  template <int dim>
+  bool
+  NewtonStep<dim>::pair_stop(const ConstrainedQP &          qp,
+                             const unsigned int             i,
+                             const TangentialPair::Vector2 &y,
+                             TangentialPair::Vector2 &      stop) const
+  {
+    // a traction pair that the direction takes out of its disc stops on
+    // the circle where the radius through y meets it; a slip pair whose
+    // slip the direction turns against the slope it was linearized with
+    // stops at its reference (the kink), as a 2D slip DoF that crosses it
+    const unsigned int j = qp.friction.partner_of(i);
+    if (qp.role[i] == DoFRole::traction)
+      {
+        // (a pair that moves along its circle leaves it to second order
+        // only: the line search's projection takes it back)
+        const double s = qp.friction.traction_bounds.local_element(i);
+        if (on_circle[i] || !(TangentialPair::norm(y) > s))
+          return false;
+        stop = TangentialPair::project_to_disc(y, s);
+        return true;
+      }
+    if (slope[i] == 0 && slope[j] == 0)
+      return false;
+    const TangentialPair::Vector2 p{qp.friction.slip_references.local_element(i),
+                                    qp.friction.slip_references.local_element(j)};
+    if ((y[0] - p[0]) * slope[i] + (y[1] - p[1]) * slope[j] > 0)
+      return false;
+    stop = p;
+    return true;
+  }
+
+
+  template <int dim>
   unsigned int
   NewtonStep<dim>::direction(const ConstrainedQP &qp,
                              const LevelVector &  x,
@@ -160,12 +323,13 @@ namespace FoslsContact
       cycle.run(finest, A, r, infinite, linear_role, v, true);
       ++n_cycles;
     };
-    CyclePreconditioner<decltype(apply_cycle)> preconditioner{apply_cycle};
+    CyclePreconditioner<decltype(apply_cycle)> preconditioner{
+      apply_cycle, pair_directions, qp.has_friction() && qp.friction.has_pairs(), qp.new_vector()};
     std::vector<types::global_dof_index>       fixed;
     for (unsigned int i = 0; i < n_owned; ++i)
       if (linear_role[i] == DoFRole::fixed)
         fixed.push_back(i);
-    TruncatedOperator op{A, fixed, qp.new_vector()};
+    TruncatedOperator op{A, fixed, pair_directions, pair_curvatures, qp.new_vector()};
     LevelVector increment = qp.new_vector(), rhs = qp.new_vector(), Ae = qp.new_vector();
     double      tolerance = 0;
     for (unsigned int round = 0; round < max_rounds + 1; ++round)
@@ -187,6 +351,7 @@ namespace FoslsContact
             rhs.local_element(i) = 0;
           else
             rhs.local_element(i) -= slope[i];
+        project_pairs(pair_directions, rhs);
         if (round == 0)
           tolerance = cg_reduction * rhs.l2_norm();
         SolverControl         control(parameters.krylov_steps, tolerance, false, false);
@@ -214,7 +379,26 @@ namespace FoslsContact
         d += increment;
         bool violated = false;
         for (unsigned int i = 0; round < max_rounds && i < n_owned; ++i)
-          if (linear_role[i] == DoFRole::free)
+          if (linear_role[i] == DoFRole::free && qp.has_friction() &&
+              qp.friction.partner_of(i) != FrictionTerms::no_partner)
+            {
+              const unsigned int j = qp.friction.partner_of(i);
+              TangentialPair::Vector2 stop;
+              if (j > i &&
+                  pair_stop(qp,
+                            i,
+                            {x.local_element(i) + d.local_element(i),
+                             x.local_element(j) + d.local_element(j)},
+                            stop))
+                for (const auto &[k, value] : {std::make_pair(i, stop[0]), std::make_pair(j, stop[1])})
+                  {
+                    linear_role[k] = DoFRole::fixed;
+                    fixed.push_back(k);
+                    increment.local_element(k) = value - x.local_element(k);
+                    violated                   = true;
+                  }
+            }
+          else if (linear_role[i] == DoFRole::free)
             {
               const double stop = stop_of(qp, i, x.local_element(i) + d.local_element(i));
               if (!std::isnan(stop))
@@ -279,6 +463,8 @@ namespace FoslsContact
     // jumps by 2 w_i |e_i| at the kink t_i = -z_i / e_i > 0: the minimizer
     // is found by walking the kinks in order (the same on every process:
     // all of them are gathered).
+    if (qp.has_friction() && qp.friction.has_pairs())
+      return minimizer_along_pairs(qp, x, e, eAe, er, t_max);
     double                                 slope0 = 0;
     std::vector<std::pair<double, double>> kinks;
     if (qp.has_friction())
@@ -329,6 +515,77 @@ namespace FoslsContact
 
   template <int dim>
   double
+  NewtonStep<dim>::minimizer_along_pairs(const ConstrainedQP &qp,
+                                         const LevelVector &  x,
+                                         const LevelVector &  e,
+                                         const double         eAe,
+                                         const double         er,
+                                         const double         t_max) const
+  {
+    // With the pairs of 3D friction J(x + t e) is convex but no longer
+    // piecewise quadratic: its right derivative
+    //   -e.r + t e.A.e + sum w (z + t e) . e / |z + t e|
+    // (w |e| where z + t e = 0; a 2D-like entry alone as in
+    // minimizer_along()) is nondecreasing, and its sign change is found by
+    // bisection to the last bit. Every process gathers all the terms
+    // (w, z, e) of the slip DoFs that move, so all find the same t.
+    std::vector<double> local; // w, z_1, z_2, e_1, e_2 per term
+    for (unsigned int i = 0; i < qp.n_owned(); ++i)
+      if (qp.role[i] == DoFRole::slip && qp.friction.slip_weights.local_element(i) > 0)
+        {
+          const unsigned int j = qp.friction.partner_of(i);
+          if (j != FrictionTerms::no_partner && j < i)
+            continue;
+          const bool   pair = j != FrictionTerms::no_partner;
+          const double e_j  = pair ? e.local_element(j) : 0.;
+          if (e.local_element(i) == 0 && e_j == 0)
+            continue;
+          local.insert(local.end(),
+                       {qp.friction.slip_weights.local_element(i),
+                        x.local_element(i) - qp.friction.slip_references.local_element(i),
+                        pair ? x.local_element(j) - qp.friction.slip_references.local_element(j) : 0.,
+                        e.local_element(i),
+                        e_j});
+        }
+    std::vector<double> terms;
+    for (const auto &part : Utilities::MPI::all_gather(qp.get_communicator(), local))
+      terms.insert(terms.end(), part.begin(), part.end());
+    double kink_slopes = 0; // sum w |e|: the terms' slopes are at most this
+    for (std::size_t k = 0; k < terms.size(); k += 5)
+      kink_slopes += terms[k] * std::hypot(terms[k + 3], terms[k + 4]);
+    const auto derivative = [&](const double t) {
+      double value = -er + t * eAe;
+      for (std::size_t k = 0; k < terms.size(); k += 5)
+        {
+          const double w = terms[k], e_1 = terms[k + 3], e_2 = terms[k + 4];
+          const double y_1 = terms[k + 1] + t * e_1, y_2 = terms[k + 2] + t * e_2;
+          const double length = std::hypot(y_1, y_2);
+          value += length > 0 ? w * (y_1 * e_1 + y_2 * e_2) / length : w * std::hypot(e_1, e_2);
+        }
+      return value;
+    };
+    if (derivative(0.) >= 0)
+      return 0.;
+    // (the derivative is >= 0 where t e.A.e >= e.r + sum w |e|)
+    double hi = std::min(t_max, (er + kink_slopes) / eAe);
+    if (!std::isfinite(hi))
+      return 0.;
+    if (derivative(hi) < 0)
+      return hi;
+    double lo = 0;
+    for (unsigned int k = 0; k < 200; ++k)
+      {
+        const double mid = 0.5 * (lo + hi);
+        if (!(mid > lo && mid < hi))
+          break;
+        (derivative(mid) < 0 ? lo : hi) = mid;
+      }
+    return lo;
+  }
+
+
+  template <int dim>
+  double
   NewtonStep<dim>::decrease_at(const ConstrainedQP &qp,
                                const LevelVector &  x,
                                const LevelVector &  e,
@@ -345,9 +602,22 @@ namespace FoslsContact
         for (unsigned int i = 0; i < qp.n_owned(); ++i)
           if (qp.role[i] == DoFRole::slip)
             {
-              const double z = x.local_element(i) - qp.friction.slip_references.local_element(i);
-              kink_change += qp.friction.slip_weights.local_element(i) *
-                             (std::abs(z + t * e.local_element(i)) - std::abs(z));
+              const double       z = x.local_element(i) - qp.friction.slip_references.local_element(i);
+              const unsigned int j = qp.friction.partner_of(i);
+              if (j == FrictionTerms::no_partner)
+                kink_change += qp.friction.slip_weights.local_element(i) *
+                               (std::abs(z + t * e.local_element(i)) - std::abs(z));
+              else if (i < j)
+                {
+                  // (|a| - |b| as (|a|^2 - |b|^2) / (|a| + |b|): without the
+                  // cancellation of two close norms)
+                  const double z_j = x.local_element(j) - qp.friction.slip_references.local_element(j);
+                  const double a_1 = z + t * e.local_element(i), a_2 = z_j + t * e.local_element(j);
+                  const double sum = std::hypot(a_1, a_2) + std::hypot(z, z_j);
+                  if (sum > 0)
+                    kink_change += qp.friction.slip_weights.local_element(i) *
+                                   ((a_1 - z) * (a_1 + z) + (a_2 - z_j) * (a_2 + z_j)) / sum;
+                }
             }
         kink_change = Utilities::MPI::sum(kink_change, qp.get_communicator());
       }
@@ -360,6 +630,10 @@ namespace FoslsContact
   NewtonStep<dim>::bound_ahead(const ConstrainedQP &qp, const unsigned int i, const double ei)
   {
     const double none = std::numeric_limits<double>::quiet_NaN();
+    // (a 3D pair's disc and kink are no bound of one entry: see
+    // line_search() and minimizer_along_pairs())
+    if (qp.has_friction() && qp.friction.partner_of(i) != FrictionTerms::no_partner)
+      return none;
     switch (qp.role[i])
       {
         case DoFRole::bounded:
@@ -449,30 +723,64 @@ namespace FoslsContact
           if (!std::isnan(bound))
             t_feasible = std::min(t_feasible, std::max(0., (bound - x.local_element(i)) / di));
         }
+    // (a 3D traction pair: the t at which x + t d leaves its disc)
+    if (qp.has_friction() && qp.friction.has_pairs())
+      for (unsigned int i = 0; i < n_owned; ++i)
+        {
+          const unsigned int j = qp.friction.partner_of(i);
+          if (qp.role[i] != DoFRole::traction || j == FrictionTerms::no_partner || j < i ||
+              on_circle[i])
+            continue;
+          const double d_1 = d.local_element(i), d_2 = d.local_element(j);
+          const double x_1 = x.local_element(i), x_2 = x.local_element(j);
+          const double a = d_1 * d_1 + d_2 * d_2, b = x_1 * d_1 + x_2 * d_2;
+          const double s = qp.friction.traction_bounds.local_element(i);
+          const double c = x_1 * x_1 + x_2 * x_2 - s * s;
+          if (a > 0)
+            t_feasible = std::min(t_feasible, std::max(0., (-b + std::sqrt(std::max(0., b * b - a * c))) / a));
+        }
     t_feasible               = Utilities::MPI::min(t_feasible, qp.get_communicator());
     const double t_unbounded = minimizer_along(qp, x, d, dAd, dr);
     const double t_d         = std::min(t_unbounded, t_feasible);
-    const double decrease_d  = decrease_at(qp, x, d, dAd, dr, t_d);
 
-    step = x;
-    step.add(t_unbounded, d);
-    qp.project_to_feasible(step);
-    step -= x;
+    // the segment [x, P_K(x + t d)] and the minimizer t_e of J on it: its
+    // decrease
     LevelVector As = qp.new_vector();
-    vmult(qp.matrix, As, step);
-    const double sAs = step * As, sr = step * residual;
-    double       t_p = 0, decrease_p = 0;
-    if (sAs > 0)
-      {
-        t_p        = minimizer_along(qp, x, step, sAs, sr, 1.);
-        decrease_p = decrease_at(qp, x, step, sAs, sr, t_p);
-      }
+    const auto  projected = [&](const double t, LevelVector &e, double &t_e) {
+      e = x;
+      e.add(t, d);
+      qp.project_to_feasible(e);
+      e -= x;
+      vmult(qp.matrix, As, e);
+      const double eAe = e * As, er = e * residual;
+      t_e              = 0;
+      if (!(eAe > 0))
+        return 0.;
+      t_e = minimizer_along(qp, x, e, eAe, er, 1.);
+      return decrease_at(qp, x, e, eAe, er, t_e);
+    };
+    // (a 3D traction pair that moves along its circle leaves the disc at
+    // once, to second order: its step a) is the segment to the projection
+    // of x + t_d d, on which J is convex as on b)'s)
+    const bool circles =
+      Utilities::MPI::max(std::find(on_circle.begin(), on_circle.end(), true) != on_circle.end() ?
+                            1u :
+                            0u,
+                          qp.get_communicator()) == 1;
+    LevelVector step_d = qp.new_vector();
+    double      t_a    = t_d;
+    const double decrease_d =
+      circles ? projected(t_d, step_d, t_a) : decrease_at(qp, x, d, dAd, dr, t_d);
+    double       t_p        = 0;
+    const double decrease_p = projected(t_unbounded, step, t_p);
     if (!(decrease_p > 0) && !(decrease_d > 0))
       return;
     // (the projected step puts the obstacles' DoFs on their bounds
     // already, up to the round-off of x + (ub - x))
     if (decrease_p > decrease_d)
       move(qp, x, step, t_p, false);
+    else if (circles)
+      move(qp, x, step_d, t_a, false);
     else
       move(qp, x, d, t_d, true);
   }

@@ -1,6 +1,7 @@
 #include <deal.II/base/memory_consumption.h>
 
 #include <fosls_contact/qp/constrained_qp.h>
+#include <fosls_contact/qp/tangential_pair.h>
 #include <fosls_contact/solvers/energy_check.h>
 #include <fosls_contact/solvers/patch_smoother.h>
 
@@ -35,6 +36,9 @@ namespace FoslsContact
       std::vector<bool>         at_bound;
       std::vector<double>       lo, hi, q, w;
       std::vector<BoxQP::Bound> where;
+      /** 3D friction: the patch's pairs (entries a < b) and the scalar block's data */
+      std::vector<std::array<unsigned int, 2>> pairs;
+      std::vector<double>                      g_scalar, c_scalar;
     };
 
     /**
@@ -186,6 +190,42 @@ namespace FoslsContact
      * on its bound or kink is set to it exactly. Returns whether J
      * increased.
      */
+    /**
+     * The new value of a patch entry of role @p role that the friction
+     * patch problem (BoxQP::solve_with_friction()) ended @p where with the
+     * correction @p c: exactly its obstacle @p ub, slip bound +-@p s or
+     * kink @p p where it ended on one, v + c elsewhere.
+     */
+    double
+    relaxed_value(const DoFRole      role,
+                  const BoxQP::Bound where,
+                  const double       c,
+                  const double       v,
+                  const double       ub,
+                  const double       s,
+                  const double       p)
+    {
+      switch (where)
+        {
+          case BoxQP::Bound::upper:
+            return role == DoFRole::bounded ? ub : s;
+          case BoxQP::Bound::lower:
+            return -s;
+          case BoxQP::Bound::kink:
+            return p;
+          default:
+            return v + c;
+        }
+    }
+
+    bool
+    relax_friction_pairs_patch(const PackedPatches &level,
+                               const unsigned int   k,
+                               double *             v,
+                               const double *       ub,
+                               const FrictionTerms &friction,
+                               RelaxationWork &     w);
+
     bool
     relax_friction_patch(const PackedPatches &  level,
                          const unsigned int     k,
@@ -224,27 +264,194 @@ namespace FoslsContact
                 break;
             }
         }
+      if (friction.has_pairs())
+        return relax_friction_pairs_patch(level, k, v, ub, friction, w);
       const double change = level.qps[level.box_qp[k]].solve_with_friction(
         w.g.data(), w.lo.data(), w.hi.data(), w.q.data(), w.w.data(), w.c.data(), w.where);
       double scale = 0;
       for (unsigned int a = 0; a < n; ++a)
         {
-          const auto i = dofs[a];
           scale += std::abs(w.g[a] * w.c[a]) + w.w[a] * (std::abs(w.c[a] - w.q[a]) + std::abs(w.q[a]));
-          switch (w.where[a])
+          v[dofs[a]] = relaxed_value(level.roles[level.start[k] + a], w.where[a], w.c[a], v[dofs[a]],
+                                     ub[dofs[a]], s_bound[dofs[a]], p[dofs[a]]);
+        }
+      return increases_energy(change, scale);
+    }
+
+
+    /**
+     * relax_friction_patch() with the pairs of 3D friction
+     * (FrictionTerms::partner): the patch's part of J is minimized by
+     * block coordinate descent, the scalar entries together
+     * (BoxQP::solve_with_friction() with the pairs held) and then each
+     * pair with the others held (TangentialPair), until the pairs stop
+     * moving or after max_rounds rounds. Each block step minimizes J
+     * exactly over its block, so J never increases; the norms and discs
+     * are separable by blocks, so the rounds converge to the patch's
+     * minimizer (Tseng, J. Optim. Theory Appl. 109, 2001), and an iterate
+     * that no patch changes is the minimizer of J. @p w holds the bounds,
+     * kinks and weights of relax_friction_patch() on entry.
+     */
+    bool
+    relax_friction_pairs_patch(const PackedPatches &level,
+                               const unsigned int   k,
+                               double *             v,
+                               const double *       ub,
+                               const FrictionTerms &friction,
+                               RelaxationWork &     w)
+    {
+      using namespace TangentialPair;
+      constexpr unsigned int max_rounds = 20;
+      const auto *           dofs       = level.neighbors.data() + level.neighbor_start[k];
+      const unsigned int     n          = level.start[k + 1] - level.start[k];
+      const BoxQP &          qp         = level.qps[level.box_qp[k]];
+      const auto             M = [&](const unsigned int a, const unsigned int b) {
+        return qp.matrix_entry(a, b);
+      };
+      const auto role = [&](const unsigned int a) { return level.roles[level.start[k] + a]; };
+      // the pairs, and their entries held in the scalar block
+      w.pairs.clear();
+      std::vector<bool> paired(n, false);
+      for (unsigned int a = 0; a < n; ++a)
+        {
+          const unsigned int j = friction.partner_of(dofs[a]);
+          if (j == FrictionTerms::no_partner ||
+              (role(a) != DoFRole::traction && role(a) != DoFRole::slip))
+            continue;
+          unsigned int b = 0;
+          while (b < n && dofs[b] != j)
+            ++b;
+          AssertThrow(b < n, ExcInternalError("a friction pair split between patches"));
+          paired[a] = true;
+          if (a < b)
+            w.pairs.push_back({{a, b}});
+        }
+      const std::vector<double> q = w.q, weight = w.w;
+      for (unsigned int a = 0; a < n; ++a)
+        if (paired[a])
+          w.lo[a] = w.hi[a] = w.w[a] = w.q[a] = 0.;
+      std::vector<double> &c = w.c;
+      std::fill(c.begin(), c.end(), 0.);
+      w.g_scalar.resize(n);
+      w.c_scalar.resize(n);
+      std::vector<BoxQP::Bound> where(n, BoxQP::Bound::none);
+      std::vector<bool>         at_kink(w.pairs.size(), false);
+      for (unsigned int round = 0; round < max_rounds; ++round)
+        {
+          // the scalar entries with the pairs at c
+          for (unsigned int a = 0; a < n; ++a)
             {
-              case BoxQP::Bound::upper:
-                v[i] = level.roles[level.start[k] + a] == DoFRole::bounded ? ub[i] : s_bound[i];
-                break;
-              case BoxQP::Bound::lower:
-                v[i] = -s_bound[i];
-                break;
-              case BoxQP::Bound::kink:
-                v[i] = p[i];
-                break;
-              default:
-                v[i] += w.c[a];
+              double ga = w.g[a];
+              for (const auto &pair : w.pairs)
+                ga -= M(a, pair[0]) * c[pair[0]] + M(a, pair[1]) * c[pair[1]];
+              w.g_scalar[a] = ga;
             }
+          qp.solve_with_friction(w.g_scalar.data(),
+                                 w.lo.data(),
+                                 w.hi.data(),
+                                 w.q.data(),
+                                 w.w.data(),
+                                 w.c_scalar.data(),
+                                 w.where,
+                                 true);
+          for (unsigned int a = 0; a < n; ++a)
+            if (!paired[a])
+              {
+                c[a]     = w.c_scalar[a];
+                where[a] = w.where[a];
+              }
+          // each pair with the rest at c
+          double move = 0, size = 0;
+          for (unsigned int p = 0; p < w.pairs.size(); ++p)
+            {
+              const auto [a, b] = w.pairs[p];
+              Vector2     h{w.g[a], w.g[b]};
+              for (unsigned int e = 0; e < n; ++e)
+                {
+                  h[0] -= M(a, e) * c[e];
+                  h[1] -= M(b, e) * c[e];
+                }
+              const Matrix2 H{M(a, a), M(a, b), M(b, b)};
+              const Vector2 now{c[a], c[b]};
+              // h at c = 0 of the pair's own variable: + H now
+              h[0] += H[0] * now[0] + H[1] * now[1];
+              h[1] += H[1] * now[0] + H[2] * now[1];
+              Vector2 next;
+              if (role(a) == DoFRole::slip)
+                {
+                  // y = c - q: 1/2 y^T H y - (h - H q)^T y + w |y|
+                  const Vector2 y = minimize_with_norm(
+                    H, {h[0] - H[0] * q[a] - H[1] * q[b], h[1] - H[1] * q[a] - H[2] * q[b]}, weight[a]);
+                  at_kink[p] = y[0] == 0 && y[1] == 0;
+                  next       = {q[a] + y[0], q[b] + y[1]};
+                  size       = std::max({size, std::abs(q[a]), std::abs(q[b])});
+                }
+              else
+                {
+                  // z = v + c in the disc: 1/2 z^T H z - (h + H v)^T z
+                  const Vector2 vv{v[dofs[a]], v[dofs[b]]};
+                  const Vector2 z = minimize_in_disc(H,
+                                                     {h[0] + H[0] * vv[0] + H[1] * vv[1],
+                                                      h[1] + H[1] * vv[0] + H[2] * vv[1]},
+                                                     friction.traction_bounds.begin()[dofs[a]]);
+                  next = {z[0] - vv[0], z[1] - vv[1]};
+                  size = std::max({size, std::abs(vv[0]), std::abs(vv[1])});
+                }
+              move = std::max({move, std::abs(next[0] - now[0]), std::abs(next[1] - now[1])});
+              size = std::max({size, std::abs(next[0]), std::abs(next[1])});
+              c[a] = next[0];
+              c[b] = next[1];
+            }
+          if (!(move > 1e-12 * size))
+            break;
+        }
+      // the change of the patch's part of J against c = 0
+      double change = 0, scale = 0;
+      for (unsigned int a = 0; a < n; ++a)
+        {
+          double mc = 0;
+          for (unsigned int b = 0; b < n; ++b)
+            mc += M(a, b) * c[b];
+          change += 0.5 * c[a] * mc - w.g[a] * c[a];
+          scale += std::abs(w.g[a] * c[a]);
+          if (!paired[a])
+            {
+              change += weight[a] * (std::abs(c[a] - q[a]) - std::abs(q[a]));
+              scale += weight[a] * (std::abs(c[a] - q[a]) + std::abs(q[a]));
+            }
+        }
+      for (unsigned int p = 0; p < w.pairs.size(); ++p)
+        {
+          const auto [a, b] = w.pairs[p];
+          if (role(a) != DoFRole::slip)
+            continue;
+          const double now = std::hypot(c[a] - q[a], c[b] - q[b]), before = std::hypot(q[a], q[b]);
+          change += weight[a] * (now - before);
+          scale += weight[a] * (now + before);
+        }
+      const double *s_bound = friction.traction_bounds.begin();
+      const double *p_ref   = friction.slip_references.begin();
+      for (unsigned int a = 0; a < n; ++a)
+        if (!paired[a])
+          {
+            const auto i = dofs[a];
+            v[i] = relaxed_value(role(a), where[a], c[a], v[i], ub[i], s_bound[i], p_ref[i]);
+          }
+      for (unsigned int p = 0; p < w.pairs.size(); ++p)
+        {
+          const auto [a, b] = w.pairs[p];
+          const auto i = dofs[a], j = dofs[b];
+          if (role(a) == DoFRole::slip && at_kink[p])
+            {
+              v[i] = p_ref[i];
+              v[j] = p_ref[j];
+              continue;
+            }
+          Vector2 z{v[i] + c[a], v[j] + c[b]};
+          if (role(a) == DoFRole::traction)
+            z = project_to_disc(z, s_bound[i]);
+          v[i] = z[0];
+          v[j] = z[1];
         }
       return increases_energy(change, scale);
     }

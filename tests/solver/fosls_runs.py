@@ -19,6 +19,7 @@ import csv
 import json
 import math
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -228,6 +229,43 @@ MONOTONE_TOLERANCE = 1e-8
 # data scale of the scenes (the push 0.01 of the top side), i.e. 1e-14
 # absolute. The solvers project exactly, so the measured value is 0.
 VIOLATION_TOLERANCE = 1e-14
+
+
+def solves(run):
+    """J at the start and after every iteration of each monotone multigrid
+    solve on the screen (with friction one solve per Tresca problem)."""
+    result = []
+    for line in run.screen.splitlines():
+        start = re.search(r"monotone multigrid: start\s+J = (\S+)", line)
+        step = re.search(r"monotone multigrid: it\s+\d+\s+J = (\S+)", line)
+        if start:
+            result.append([float(start.group(1))])
+        elif step and result:
+            result[-1].append(float(step.group(1)))
+    return result
+
+
+def newton_steps(run):
+    """The iterations (Newton steps) of each solve on the screen."""
+    return [len(J) - 1 for J in solves(run)]
+
+
+def monotone(run):
+    """J never increases within a solve on the screen (as printed, 7 digits)."""
+    return all(J[k] <= J[k - 1] for J in solves(run) for k in range(1, len(J)))
+
+
+def same_steps(a, b, tolerance):
+    """Two runs' load steps with friction: the same stick and slip
+    vertices, forces to @p tolerance of the normal force and J to
+    @p tolerance."""
+    a, b = a["load_steps"] or [], b["load_steps"] or []
+    return len(a) == len(b) > 0 and all(
+        (r["stick_vertices"], r["slip_vertices"]) == (s["stick_vertices"], s["slip_vertices"])
+        and abs(r["normal_force"] - s["normal_force"]) <= tolerance * r["normal_force"]
+        and abs(r["tangential_force"] - s["tangential_force"]) <= tolerance * r["normal_force"]
+        and relative_difference(r["functional"], s["functional"]) <= tolerance
+        for r, s in zip(a, b))
 
 
 def check_monotone_feasible(run, label, scale=0.01,

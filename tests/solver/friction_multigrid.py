@@ -19,12 +19,12 @@
 #    processes as on 1.
 # ctest: mpirun sanitize
 import os
-import re
 import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from fosls_runs import Runner, check, check_monotone_feasible, finish, relative_difference
+from fosls_runs import (Runner, check, check_monotone_feasible, finish, monotone, newton_steps,
+                        relative_difference, same_steps, solves)
 
 R = Runner(sys.argv)
 SQUARE = "tests/scenes/square.prm"
@@ -33,41 +33,6 @@ PRESS = ["Data/Constants=push=0.01, shift=0", "Data/Dirichlet values=shift; -pus
 PATH = ["Data/Load steps=push=0.01; shift=0.002; shift=0.02"]
 MULTIGRID = ["Solver/Type=monotone multigrid"]  # (the square's scene takes the active set)
 REFERENCE = ["Solver/Type=active set"]
-
-
-def solves(run):
-    """J at the start and after every iteration of each solve on the
-    screen (one solve per Tresca problem)."""
-    result = []
-    for line in run.screen.splitlines():
-        start = re.search(r"monotone multigrid: start\s+J = (\S+)", line)
-        step = re.search(r"monotone multigrid: it\s+\d+\s+J = (\S+)", line)
-        if start:
-            result.append([float(start.group(1))])
-        elif step and result:
-            result[-1].append(float(step.group(1)))
-    return result
-
-
-def newton_steps(run):
-    return [len(J) - 1 for J in solves(run)]
-
-
-def same_steps(a, b, tolerance):
-    """The same stick and slip vertices, forces to @p tolerance of the
-    normal force and J to @p tolerance."""
-    a, b = a["load_steps"] or [], b["load_steps"] or []
-    return len(a) == len(b) > 0 and all(
-        (r["stick_vertices"], r["slip_vertices"]) == (s["stick_vertices"], s["slip_vertices"])
-        and abs(r["normal_force"] - s["normal_force"]) <= tolerance * r["normal_force"]
-        and abs(r["tangential_force"] - s["tangential_force"]) <= tolerance * r["normal_force"]
-        and relative_difference(r["functional"], s["functional"]) <= tolerance
-        for r, s in zip(a, b))
-
-
-def monotone(run):
-    """J never increases within a solve (as printed, 7 digits)."""
-    return all(J[k] <= J[k - 1] for J in solves(run) for k in range(1, len(J)))
 
 
 laws = (("Tresca", "Friction/Bound=0.001"), ("Coulomb", "Friction/Coefficient=0.3"))

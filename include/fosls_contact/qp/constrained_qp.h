@@ -55,10 +55,32 @@ namespace FoslsContact
    * slip_weights_i |x_i - slip_references_i| to J: C_compl s |u_t - p_t|
    * by the trapezoidal rule, with p the displacement the step starts
    * from. The vectors are empty without friction.
+   *
+   * In 3D the two tangential coordinates of a face or a vertex are a
+   * pair (@p partner): the bound is the disc |(x_i, x_j)| <= s and the
+   * term w |(x_i - p_i, x_j - p_j)| (the Euclidean norm: isotropic
+   * friction), with the same s or w on both entries.
    */
   struct FrictionTerms
   {
     LevelVector traction_bounds, slip_weights, slip_references;
+    /**
+     * The local index of the other tangential coordinate of the same face
+     * or vertex (owned and ghost DoFs: both coordinates of one face or
+     * vertex have one owner), or no_partner: an entry alone (2D, where
+     * the vector is empty, and a vertex of a roller whose other
+     * tangential coordinate is prescribed).
+     */
+    std::vector<unsigned int> partner;
+
+    static constexpr unsigned int no_partner = static_cast<unsigned int>(-1);
+    /** partner[i], or no_partner. */
+    unsigned int partner_of(const unsigned int i) const
+    {
+      return partner.empty() ? no_partner : partner[i];
+    }
+    /** Whether any entry has a partner (collective: the same on every process). */
+    bool has_pairs() const { return !partner.empty(); }
   };
 
   /**

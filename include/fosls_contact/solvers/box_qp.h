@@ -82,8 +82,8 @@ namespace FoslsContact
      *   minimize 1/2 c^T M c - g^T c + sum_i w_i |c_i - q_i|
      *   subject to lo_i <= c_i <= hi_i,
      *
-     * with lo_i <= 0 <= hi_i (c = 0 is feasible; +-inf for no bound) and
-     * w_i >= 0 (0: no kink). The same primal active set method as solve():
+     * with lo_i <= 0 <= hi_i (c = 0 is feasible; +-inf for no bound; an
+     * entry with lo_i = hi_i = 0 is held at 0) and w_i >= 0 (0: no kink). The same primal active set method as solve():
      * a kink is a constraint c_i = q_i in the working set, and an entry
      * off its kink carries the slope w_i of its side; an entry leaves the
      * working set when its multiplier mu_i = (g - M c)_i points out of it
@@ -91,6 +91,11 @@ namespace FoslsContact
      * step, so the method ends at the exact minimizer. On return
      * @p where[i] tells which bound or kink c_i is on (then it is set to
      * it exactly). Returns the change of the objective against c = 0.
+     * @p from_inverse: solve the reduced problems of a working set of at
+     * most max_held_from_inverse entries by a Schur complement of the
+     * stored inverse, in O(n^2), instead of factorizing M on the free
+     * entries (3D friction solves each patch several times with its pairs
+     * held, PatchSmoother).
      */
     double solve_with_friction(const double *      g,
                                const double *      lo,
@@ -98,7 +103,11 @@ namespace FoslsContact
                                const double *      q,
                                const double *      w,
                                double *            c,
-                               std::vector<Bound> &where) const;
+                               std::vector<Bound> &where,
+                               const bool          from_inverse = false) const;
+
+    /** The largest working set solve_with_friction() takes from the inverse. */
+    static constexpr unsigned int max_held_from_inverse = 24;
 
   private:
     /**
@@ -107,7 +116,8 @@ namespace FoslsContact
      */
     void solve_reduced(const std::vector<unsigned int> &free,
                        const Vector<double> &           rhs,
-                       Vector<double> &                 sol) const;
+                       Vector<double> &                 sol,
+                       const bool                       from_inverse = false) const;
 
     FullMatrix<double> matrix;
     FullMatrix<double> inverse;

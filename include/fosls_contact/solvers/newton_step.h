@@ -3,6 +3,7 @@
 
 #include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/qp/constrained_qp.h>
+#include <fosls_contact/qp/tangential_pair.h>
 #include <fosls_contact/solvers/monotone_cycle.h>
 #include <fosls_contact/solvers/patch_smoother.h>
 #include <fosls_contact/solvers/solver_statistics.h>
@@ -12,6 +13,18 @@
 
 namespace FoslsContact
 {
+  /**
+   * A 3D friction pair of owned DoFs (i, j) and a unit vector u of its
+   * plane: the direction along which the Newton step's linear problem
+   * moves it, or that of a curvature kappa u u^T it adds.
+   */
+  struct PairDirection
+  {
+    unsigned int            i, j;
+    TangentialPair::Vector2 u;
+    double                  kappa; ///< a curvature along u, or 0
+  };
+
   /**
    * One step of truncated nonsmooth Newton multigrid with conjugate
    * gradients (Solver/Krylov steps > 0, the default solver):
@@ -109,6 +122,27 @@ namespace FoslsContact
      */
     double stop_of(const ConstrainedQP &qp, const unsigned int i, const double y) const;
 
+    /** The linear roles (and slopes) of the 3D friction pair of DoF @p i. */
+    void set_pair_role(const ConstrainedQP &qp,
+                       const LocalElements &x,
+                       const LocalElements &r,
+                       const unsigned int   i);
+    /**
+     * stop_of() for the 3D friction pair of DoF @p i taken to @p y: whether
+     * it must stop, and where (@p stop).
+     */
+    bool pair_stop(const ConstrainedQP &          qp,
+                   const unsigned int             i,
+                   const TangentialPair::Vector2 &y,
+                   TangentialPair::Vector2 &      stop) const;
+    /** minimizer_along() with the pairs of 3D friction. Collective. */
+    double minimizer_along_pairs(const ConstrainedQP &qp,
+                                 const LevelVector &  x,
+                                 const LevelVector &  e,
+                                 const double         eAe,
+                                 const double         er,
+                                 const double         t_max) const;
+
     /**
      * The minimizer over [0, @p t_max] of J(x + t e), given e.A.e = @p eAe > 0
      * and e.(b - A x) = @p er, with the kinks of the friction term.
@@ -159,6 +193,15 @@ namespace FoslsContact
      * right-hand side is the residual less it.
      */
     std::vector<double> slope;
+    /**
+     * The free 3D slip pairs of the linear problem, which move along their
+     * slip direction only (set_pair_role()).
+     */
+    std::vector<PairDirection> pair_directions;
+    /** The curvatures kappa u u^T the linear problem adds at the pairs. */
+    std::vector<PairDirection> pair_curvatures;
+    /** The owned DoFs of traction pairs that move along their circle. */
+    std::vector<bool> on_circle;
   };
 } // namespace FoslsContact
 

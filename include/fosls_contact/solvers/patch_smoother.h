@@ -116,7 +116,9 @@ namespace FoslsContact
      * whose problems are the Newton step's linear ones, in which a fine
      * friction DoF is held or free). With them a patch with such a DoF is
      * relaxed exactly with its bounds and kinks
-     * (BoxQP::solve_with_friction()). They must outlive the smoothing.
+     * (BoxQP::solve_with_friction()), and a patch with 3D pairs by block
+     * coordinate descent over its scalar entries and its pairs
+     * (TangentialPair). They must outlive the smoothing.
      */
     void set_friction(const unsigned int l, const FrictionTerms *friction);
 

@@ -12,8 +12,10 @@ namespace FoslsContact
    * so J never increases. With friction (ConstrainedQP::FrictionTerms) a
    * tangential traction is cut at its slip bound, and a slip DoF's step
    * minimizes the quadratic plus w_i |x_i - p_i| (soft thresholding: the
-   * step without the term, moved toward p_i by w_i / a_ii, or to p_i):
-   * this is the reference solver of friction.
+   * step without the term, moved toward p_i by w_i / a_ii, or to p_i);
+   * a 3D pair (FrictionTerms::partner) takes one 2x2 block step, in its
+   * disc or with its Euclidean norm (TangentialPair): this is the
+   * reference solver of friction.
    *
    * The sweep is sequential, on the first process (the baseline, meant
    * for one process), in the order of Discretization::sweep_order(): the

@@ -251,6 +251,9 @@ namespace FoslsContact
                         r.stationarity = std::max(r.stationarity, std::abs(gi));
                         break;
                       }
+                    // (a disc of radius 0 holds the pair at 0 with any multiplier)
+                    if (length == 0)
+                      break;
                     const double along = (gi * xi + g.local_element(j) * x.local_element(j)) / length;
                     r.stationarity =
                       std::max({r.stationarity, std::abs(gi - along * xi / length), std::max(0., along)});

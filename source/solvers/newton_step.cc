@@ -14,10 +14,6 @@ namespace FoslsContact
   namespace
   {
     /**
-     * A restricted to the inactive set: the rows and columns of the fixed
-     * DoFs are 0 (@p fixed: the owned ones).
-     */
-    /**
      * The 3D friction pairs that move along one direction only:
      * v_pair <- (v_pair . u) u (owned DoFs).
      */
@@ -157,37 +153,37 @@ namespace FoslsContact
       if (friction && qp.friction.partner_of(i) != FrictionTerms::no_partner)
         set_pair_role(qp, x_local, r, i);
       else
-      switch (qp.role[i])
-        {
-          case DoFRole::bounded:
-            linear_role[i] =
-              (x_local(i) >= ub(i) && r(i) >= 0) ? DoFRole::fixed : DoFRole::free;
-            break;
-          case DoFRole::traction:
-            {
-              const double s = friction ? qp.friction.traction_bounds.local_element(i) :
-                                          std::numeric_limits<double>::infinity();
-              linear_role[i] = (x_local(i) >= s && r(i) >= 0) || (x_local(i) <= -s && r(i) <= 0) ?
-                                 DoFRole::fixed :
-                                 DoFRole::free;
+        switch (qp.role[i])
+          {
+            case DoFRole::bounded:
+              linear_role[i] =
+                (x_local(i) >= ub(i) && r(i) >= 0) ? DoFRole::fixed : DoFRole::free;
               break;
-            }
-          case DoFRole::slip:
-            {
-              linear_role[i] = DoFRole::free;
-              if (!friction)
+            case DoFRole::traction:
+              {
+                const double s = friction ? qp.friction.traction_bounds.local_element(i) :
+                                            std::numeric_limits<double>::infinity();
+                linear_role[i] = (x_local(i) >= s && r(i) >= 0) || (x_local(i) <= -s && r(i) <= 0) ?
+                                   DoFRole::fixed :
+                                   DoFRole::free;
                 break;
-              const double w = qp.friction.slip_weights.local_element(i);
-              const double z = x_local(i) - qp.friction.slip_references.local_element(i);
-              if (z == 0 && std::abs(r(i)) <= w)
-                linear_role[i] = DoFRole::fixed;
-              else if (i < qp.n_owned())
-                slope[i] = (z > 0 || (z == 0 && r(i) > 0)) ? w : -w;
+              }
+            case DoFRole::slip:
+              {
+                linear_role[i] = DoFRole::free;
+                if (!friction)
+                  break;
+                const double w = qp.friction.slip_weights.local_element(i);
+                const double z = x_local(i) - qp.friction.slip_references.local_element(i);
+                if (z == 0 && std::abs(r(i)) <= w)
+                  linear_role[i] = DoFRole::fixed;
+                else if (i < qp.n_owned())
+                  slope[i] = (z > 0 || (z == 0 && r(i) > 0)) ? w : -w;
+                break;
+              }
+            default:
               break;
-            }
-          default:
-            break;
-        }
+          }
   }
 
 
@@ -212,10 +208,11 @@ namespace FoslsContact
     // are continuous unknowns set by the whole elastic field: held, they
     // are left to the smoother alone, whose corrections are local, and
     // without the curvature the direction overshoots them and the line
-    // search cuts the steps short (doc/method.md section 7.7). A curvature above curvature_limit times the pair's
-    // diagonal of A holds its direction instead: a stiff local mode,
-    // which the smoother's pair blocks take, and which would cost the
-    // preconditioned CG (the cycle does not see the curvature) many steps.
+    // search cuts the steps short (doc/method.md section 7.7). A curvature
+    // above curvature_limit times the pair's diagonal of A holds its
+    // direction instead: a stiff local mode, which the smoother's pair
+    // blocks take, and which would cost the preconditioned CG (the cycle
+    // does not see the curvature) many steps.
     constexpr double   curvature_limit = 10;
     const unsigned int j               = qp.friction.partner_of(i);
     if (j < i)

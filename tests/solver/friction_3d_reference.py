@@ -4,18 +4,19 @@
 # vertex's slip with its Euclidean norm (TangentialPair), one pair at a
 # time: a reference that shares neither the patches nor the Newton step.
 # The unit cube (tests/scenes/cube3d.prm) on 2 levels (189 DoFs: projected
-# Gauss-Seidel needs some 10^5 sweeps), pressed and moved along (2, 1),
+# Gauss-Seidel's sweeps stall on finer meshes), pressed and moved along (2, 1),
 # Tresca (s = 0.002): the same stick and slip vertices, forces to 1e-6 of
 # the normal force and J to 1e-6 in both steps.
 # prm/sliding_block_3d.prm on 3 levels (3,903 DoFs, five load steps of
-# Coulomb friction): every step converges and J never increases.
+# Coulomb friction): every step converges and J never increases; the
+# Newton steps per Tresca problem printed.
 # ctest: long timeout=900
 import os
 import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from fosls_runs import Runner, check, finish, monotone, relative_difference, solves
+from fosls_runs import Runner, check, finish, monotone, newton_steps, relative_difference, solves
 
 R = Runner(sys.argv)
 CUBE = "tests/scenes/cube3d.prm"
@@ -39,8 +40,10 @@ check(multigrid.ok() and reference.ok() and len(a) == len(b) == 2 and all(
 
 block = R.run("prm/sliding_block_3d.prm", ["Geometry/Levels=3"], "sliding_block_3d_3")
 rows = block["load_steps"] or []
-print("prm/sliding_block_3d.prm, 3 levels: %s DoFs, stick vertices %s" % (
-    block["dofs"], [r["stick_vertices"] for r in rows]))
+print("prm/sliding_block_3d.prm, 3 levels: %s DoFs, %d Tresca problems, at most %d Newton steps "
+      "each; stick vertices %s" % (block["dofs"], len(solves(block)),
+                                   max(newton_steps(block), default=0),
+                                   [r["stick_vertices"] for r in rows]))
 check(block.ok() and len(rows) == 5 and len(solves(block)) >= 5 and monotone(block),
       "sliding block 3D, 3 levels: every step converged, J never increases")
 finish()

@@ -83,8 +83,9 @@ namespace FoslsContact
      *   subject to lo_i <= c_i <= hi_i,
      *
      * with lo_i <= 0 <= hi_i (c = 0 is feasible; +-inf for no bound; an
-     * entry with lo_i = hi_i = 0 is held at 0) and w_i >= 0 (0: no kink). The same primal active set method as solve():
-     * a kink is a constraint c_i = q_i in the working set, and an entry
+     * entry with lo_i = hi_i = 0 is held at 0) and w_i >= 0 (0: no kink).
+     * The same primal active set method as solve(): a kink is a
+     * constraint c_i = q_i in the working set, and an entry
      * off its kink carries the slope w_i of its side; an entry leaves the
      * working set when its multiplier mu_i = (g - M c)_i points out of it
      * (at a kink: |mu_i| > w_i, to the side of mu_i). J decreases in every

@@ -182,15 +182,6 @@ namespace FoslsContact
 
 
     /**
-     * Patch k of the constrained problem with the friction terms of J: the
-     * exact minimizer (BoxQP::solve_with_friction()) of the patch's part
-     * of J, with the obstacles of its bounded DoFs, the bounds
-     * |x_i| <= s_i of its tangential tractions and the kinks
-     * w_i |x_i - p_i| of its tangential displacements. An entry that ends
-     * on its bound or kink is set to it exactly. Returns whether J
-     * increased.
-     */
-    /**
      * The new value of a patch entry of role @p role that the friction
      * patch problem (BoxQP::solve_with_friction()) ended @p where with the
      * correction @p c: exactly its obstacle @p ub, slip bound +-@p s or
@@ -216,66 +207,6 @@ namespace FoslsContact
           default:
             return v + c;
         }
-    }
-
-    bool
-    relax_friction_pairs_patch(const PackedPatches &level,
-                               const unsigned int   k,
-                               double *             v,
-                               const double *       ub,
-                               const FrictionTerms &friction,
-                               RelaxationWork &     w);
-
-    bool
-    relax_friction_patch(const PackedPatches &  level,
-                         const unsigned int     k,
-                         double *               v,
-                         const double *         ub,
-                         const FrictionTerms &  friction,
-                         RelaxationWork &       w)
-    {
-      const auto *       dofs     = level.neighbors.data() + level.neighbor_start[k];
-      const unsigned int n        = level.start[k + 1] - level.start[k];
-      const double       infinity = std::numeric_limits<double>::infinity();
-      const double *     s_bound  = friction.traction_bounds.begin();
-      const double *     weight   = friction.slip_weights.begin();
-      const double *     p        = friction.slip_references.begin();
-      w.lo.assign(n, -infinity);
-      w.hi.assign(n, infinity);
-      w.q.assign(n, 0.);
-      w.w.assign(n, 0.);
-      for (unsigned int a = 0; a < n; ++a)
-        {
-          const auto i = dofs[a];
-          switch (level.roles[level.start[k] + a])
-            {
-              case DoFRole::bounded:
-                w.hi[a] = std::max(0., ub[i] - v[i]);
-                break;
-              case DoFRole::traction:
-                w.lo[a] = std::min(0., -s_bound[i] - v[i]);
-                w.hi[a] = std::max(0., s_bound[i] - v[i]);
-                break;
-              case DoFRole::slip:
-                w.q[a] = p[i] - v[i];
-                w.w[a] = weight[i];
-                break;
-              default:
-                break;
-            }
-        }
-      if (friction.has_pairs())
-        return relax_friction_pairs_patch(level, k, v, ub, friction, w);
-      const double change = level.qps[level.box_qp[k]].solve_with_friction(
-        w.g.data(), w.lo.data(), w.hi.data(), w.q.data(), w.w.data(), w.c.data(), w.where);
-      double scale = 0;
-      for (unsigned int a = 0; a < n; ++a)
-        {
-          scale += std::abs(w.g[a] * w.c[a]) + w.w[a] * (std::abs(w.c[a] - w.q[a]) + std::abs(w.q[a]));
-          v[dofs[a]] = relaxed_value(level.roles[level.start[k] + a], w.where[a], w.c[a], v[dofs[a]],
-                                     ub[dofs[a]], s_bound[dofs[a]], p[dofs[a]]);
-        }
-      return increases_energy(change, scale);
     }
 
 
@@ -455,6 +386,70 @@ namespace FoslsContact
         }
       return increases_energy(change, scale);
     }
+
+
+    /**
+     * Patch k of the constrained problem with the friction terms of J: the
+     * exact minimizer (BoxQP::solve_with_friction()) of the patch's part
+     * of J, with the obstacles of its bounded DoFs, the bounds
+     * |x_i| <= s_i of its tangential tractions and the kinks
+     * w_i |x_i - p_i| of its tangential displacements. An entry that ends
+     * on its bound or kink is set to it exactly. Returns whether J
+     * increased.
+     */
+    bool
+    relax_friction_patch(const PackedPatches &  level,
+                         const unsigned int     k,
+                         double *               v,
+                         const double *         ub,
+                         const FrictionTerms &  friction,
+                         RelaxationWork &       w)
+    {
+      const auto *       dofs     = level.neighbors.data() + level.neighbor_start[k];
+      const unsigned int n        = level.start[k + 1] - level.start[k];
+      const double       infinity = std::numeric_limits<double>::infinity();
+      const double *     s_bound  = friction.traction_bounds.begin();
+      const double *     weight   = friction.slip_weights.begin();
+      const double *     p        = friction.slip_references.begin();
+      w.lo.assign(n, -infinity);
+      w.hi.assign(n, infinity);
+      w.q.assign(n, 0.);
+      w.w.assign(n, 0.);
+      for (unsigned int a = 0; a < n; ++a)
+        {
+          const auto i = dofs[a];
+          switch (level.roles[level.start[k] + a])
+            {
+              case DoFRole::bounded:
+                w.hi[a] = std::max(0., ub[i] - v[i]);
+                break;
+              case DoFRole::traction:
+                w.lo[a] = std::min(0., -s_bound[i] - v[i]);
+                w.hi[a] = std::max(0., s_bound[i] - v[i]);
+                break;
+              case DoFRole::slip:
+                w.q[a] = p[i] - v[i];
+                w.w[a] = weight[i];
+                break;
+              default:
+                break;
+            }
+        }
+      if (friction.has_pairs())
+        return relax_friction_pairs_patch(level, k, v, ub, friction, w);
+      const double change = level.qps[level.box_qp[k]].solve_with_friction(
+        w.g.data(), w.lo.data(), w.hi.data(), w.q.data(), w.w.data(), w.c.data(), w.where);
+      double scale = 0;
+      for (unsigned int a = 0; a < n; ++a)
+        {
+          scale += std::abs(w.g[a] * w.c[a]) + w.w[a] * (std::abs(w.c[a] - w.q[a]) + std::abs(w.q[a]));
+          v[dofs[a]] = relaxed_value(level.roles[level.start[k] + a], w.where[a], w.c[a], v[dofs[a]],
+                                     ub[dofs[a]], s_bound[dofs[a]], p[dofs[a]]);
+        }
+      return increases_energy(change, scale);
+    }
+
+
   } // namespace
 
 

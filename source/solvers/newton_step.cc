@@ -766,8 +766,35 @@ namespace FoslsContact
                           qp.get_communicator()) == 1;
     LevelVector step_d = qp.new_vector();
     double      t_a    = t_d;
-    const double decrease_d =
+    double      decrease_d =
       circles ? projected(t_d, step_d, t_a) : decrease_at(qp, x, d, dAd, dr, t_d);
+    // The Newton model of a pair on its circle is exact to second order in
+    // its move along the tangent, but the circle leaves the tangent by
+    // |t d|^2 / (2 s), and A's stiffness in that radial direction enters
+    // J to fourth order: where the direction turns a traction by a large
+    // angle (|t d| a fair fraction of s), the chord to P(x + t_d d) costs
+    // far more than the model says and its minimizer is a tiny t (1/100 of
+    // t_d in the 3D sliding block, where the iteration then crawls on the
+    // smoother's steps). So the projection path t -> P(x + t d) is searched
+    // too, halving t while the decrease of the chord's minimizer grows (J
+    // along the path is not convex, but smooth: its first maximum of the
+    // decrease is taken).
+    if (circles)
+      {
+        LevelVector trial = qp.new_vector();
+        double      t     = t_d;
+        for (unsigned int k = 0; k < max_path_halvings; ++k)
+          {
+            t *= 0.5;
+            double       t_e      = 0;
+            const double decrease = projected(t, trial, t_e);
+            if (!(decrease > decrease_d))
+              break;
+            decrease_d = decrease;
+            t_a        = t_e;
+            step_d.swap(trial);
+          }
+      }
     double       t_p        = 0;
     const double decrease_p = projected(t_unbounded, step, t_p);
     if (!(decrease_p > 0) && !(decrease_d > 0))

@@ -37,10 +37,12 @@ MULTIGRID = ["Solver/Type=monotone multigrid"]  # (the cube's scene takes the ac
 
 
 def print_steps(name, run):
+    # (Q / P of the pressed step is round-off: printed as its bound)
     for row in run["load_steps"] or []:
+        ratio = row["tangential_force"] / row["normal_force"]
         print("%s step %d: %d stick and %d slip vertices, Q / P = %s" % (
             name, row["step"], row["stick_vertices"], row["slip_vertices"],
-            rounded(row["tangential_force"] / row["normal_force"], 4)))
+            "below 1e-10" if abs(ratio) < 1e-10 else rounded(ratio, 4)))
 
 
 # --- Tresca: every step is the minimizer of J

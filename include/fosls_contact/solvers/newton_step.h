@@ -81,6 +81,12 @@ namespace FoslsContact
      */
     static constexpr unsigned int max_rounds = 20;
     /**
+     * The most halvings of the step along the projection path of the 3D
+     * friction pairs on their circles (line_search()): 2^-10 of the
+     * feasible step is below the smoother's own corrections.
+     */
+    static constexpr unsigned int max_path_halvings = 10;
+    /**
      * The linear solves of all rounds stop at this times the norm of the
      * first round's right-hand side (the residual on the free DoFs), not
      * of their own: a DoF moved to its bound puts a large, local residual

@@ -36,9 +36,16 @@ namespace FoslsContact
       std::vector<bool>         at_bound;
       std::vector<double>       lo, hi, q, w;
       std::vector<BoxQP::Bound> where;
-      /** 3D friction: the patch's pairs (entries a < b) and the scalar block's data */
+      /**
+       * 3D friction: the patch's pairs (entries a < b), which entries are
+       * paired, the scalar block's data, the pairs' references and weights
+       * (the scalar block's are zeroed), the scalar entries' bounds hit and
+       * which slip pairs end at their kink
+       */
       std::vector<std::array<unsigned int, 2>> pairs;
-      std::vector<double>                      g_scalar, c_scalar;
+      std::vector<bool>                        paired, at_kink;
+      std::vector<double>                      g_scalar, c_scalar, pair_q, pair_w;
+      std::vector<BoxQP::Bound>                pair_where;
     };
 
     /**
@@ -242,7 +249,8 @@ namespace FoslsContact
       const auto role = [&](const unsigned int a) { return level.roles[level.start[k] + a]; };
       // the pairs, and their entries held in the scalar block
       w.pairs.clear();
-      std::vector<bool> paired(n, false);
+      auto &paired = w.paired;
+      paired.assign(n, false);
       for (unsigned int a = 0; a < n; ++a)
         {
           const unsigned int j = friction.partner_of(dofs[a]);
@@ -257,7 +265,9 @@ namespace FoslsContact
           if (a < b)
             w.pairs.push_back({{a, b}});
         }
-      const std::vector<double> q = w.q, weight = w.w;
+      w.pair_q = w.q;
+      w.pair_w = w.w;
+      const std::vector<double> &q = w.pair_q, &weight = w.pair_w;
       for (unsigned int a = 0; a < n; ++a)
         if (paired[a])
           w.lo[a] = w.hi[a] = w.w[a] = w.q[a] = 0.;
@@ -265,8 +275,10 @@ namespace FoslsContact
       std::fill(c.begin(), c.end(), 0.);
       w.g_scalar.resize(n);
       w.c_scalar.resize(n);
-      std::vector<BoxQP::Bound> where(n, BoxQP::Bound::none);
-      std::vector<bool>         at_kink(w.pairs.size(), false);
+      auto &where = w.pair_where;
+      where.assign(n, BoxQP::Bound::none);
+      auto &at_kink = w.at_kink;
+      at_kink.assign(w.pairs.size(), false);
       for (unsigned int round = 0; round < max_rounds; ++round)
         {
           // the scalar entries with the pairs at c

@@ -58,6 +58,10 @@ check_monotone_feasible(run, "Tresca: the last step")
 two = R.run(CUBE, tresca + PATH, "tresca_np2", processes=2)
 check(two.ok() and same_steps(two, run, 1e-8),
       "Tresca: the same steps on 2 processes as on 1 (to 1e-8)")
+# (the iterations may differ: J's round-off depends on the threads)
+one_thread = R.run(CUBE, tresca + PATH + ["Solver/Threads=1"], "tresca_one_thread")
+check(one_thread.ok() and same_steps(one_thread, run, 1e-8),
+      "Tresca: the same steps on 1 thread as on 2 (to 1e-8)")
 # (the KKT residuals of a step, in summary.json for the last one: the
 # paths that end at each step; their steps are the whole path's)
 rows = run["load_steps"] or []

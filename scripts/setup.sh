@@ -10,7 +10,12 @@
 # rebuild what changed. Build messages go to stderr, so that the stdout of
 # scripts/run.sh is the program's own output.
 # Environment: FOSLS_JOBS (default 2) = parallel make jobs; FOSLS_TARGET
-# (default all) = the make target (.ci/run: sanitize_tests).
+# (default all) = the make target (.ci/run: sanitize_tests);
+# FOSLS_UNITY_BUILD=ON|OFF (default: as configured before, else OFF) = CMake's
+# unity build, which compiles the sources in batches of 8: 35% less CPU
+# for a build from scratch (548 s against 841 s measured here), but a
+# change to one source recompiles its batch, so .ci/run uses it and a
+# working copy does not.
 
 export DEBIAN_FRONTEND=noninteractive
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -49,6 +54,9 @@ fosls_setup() (
     --sanitize) build=build-asan options+=(-DFOSLS_SANITIZE=address) ;;
     *) echo "setup: unknown argument '$1' (the only one is --sanitize)" >&2; exit 1 ;;
   esac
+  if [[ -n ${FOSLS_UNITY_BUILD:-} ]]; then
+    options+=(-DCMAKE_UNITY_BUILD="$FOSLS_UNITY_BUILD")
+  fi
   mkdir -p "$root/$build"
   cd "$root/$build"
   # re-run cmake every time: cheap, and it picks up new source/test files

@@ -1,4 +1,4 @@
-# ctest: long sanitize
+# ctest: long sanitize cost=242
 """Fuzz the command line, the scene files and the parameter values of
 fosls-contact.
 

@@ -27,7 +27,7 @@
 #   matrices differ in their last digits with the thread count, and J, a
 #   small difference of O(1) terms, magnifies that; each run's J is its
 #   active set solution's to 2e-16).
-# ctest: sanitize
+# ctest: sanitize cost=19
 import os
 import sys
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

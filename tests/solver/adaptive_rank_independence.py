@@ -36,7 +36,7 @@
 # apart (47/48 on the first mesh, 37/38 on the third). Only the
 # one-process counts are printed (those of N processes are asserted), so
 # the output does not depend on round-off.
-# ctest: timeout=600 mpirun
+# ctest: timeout=600 mpirun cost=71
 import csv
 import os
 import re

@@ -24,7 +24,7 @@
 # - the files: one VTU per step, solution.pvd with every step as a time
 #   step, a contact table per step, adaptive_steps.csv with one row per
 #   step, summary.json's "adaptive_steps".
-# ctest: sanitize
+# ctest: sanitize cost=9
 import csv
 import os
 import re

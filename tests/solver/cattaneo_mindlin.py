@@ -21,7 +21,7 @@
 #  - J never increases, every iterate feasible (the last solve);
 #  - on 6 levels, 2 MPI processes give the comparison of 1 (summary.json
 #    "cattaneo_mindlin" and "hertz", to 1e-8).
-# ctest: mpirun timeout=400
+# ctest: mpirun timeout=400 cost=190
 import csv
 import math
 import os

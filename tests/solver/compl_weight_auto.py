@@ -23,6 +23,7 @@
 #    or a Dirichlet boundary that leaves a component free (a roller, where
 #    the traction acts on the free component), the same traction is refused
 #    naming 'Data/Traction'.
+# ctest: cost=12
 import os
 import re
 import sys

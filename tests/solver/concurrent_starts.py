@@ -7,6 +7,7 @@
 # (app/main.cc).
 # Four streams of 40 runs of the square with 2 levels, side by side: every
 # run ends normally with nothing on stderr.
+# ctest: cost=50
 import os
 import subprocess
 import sys

@@ -12,7 +12,7 @@
 # measured <= 3e-10); on 5 levels the force within 0.5% of that of 4
 # levels (measured 0.24%; the discretization converges, the square's
 # differences shrink by about 0.36 per level).
-# ctest: timeout=600
+# ctest: timeout=600 cost=8
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

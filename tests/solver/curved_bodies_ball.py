@@ -11,6 +11,7 @@
 #    so the two discrete problems are one up to the symmetry, and the runs
 #    differ by their stopping points (tolerance 1e-8 on the error reduction;
 #    measured 4e-10 for the force and 1.3e-9 for J).
+# ctest: cost=14
 import os
 import sys
 

@@ -8,6 +8,7 @@
 # RT0, is constant in x and y in a cell, where sigma_zz = lambda tr eps
 # varies; the 2D discretization needs no such row); scripts/plot.py draws
 # its contact pressure against the distance from the contact line.
+# ctest: cost=17
 import os
 import subprocess
 import sys

@@ -10,7 +10,7 @@
 # the extrapolation of levels 6, 7, 8: F_9 ~ F_8 + q (F_8 - F_7) with
 # q = (F_8 - F_7) / (F_7 - F_6) (measured q = 0.36, F_9 within 6e-7 of
 # the prediction; asserted 1e-5), and the level differences must shrink.
-# ctest: timeout=900
+# ctest: timeout=900 cost=15
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

@@ -16,6 +16,7 @@
 # And: a scene that sets Solver/Tolerance = 1e-10 stops by that tolerance;
 # projected Gauss-Seidel, for which discretization accuracy is refused,
 # runs with auto (to the tolerance; it converges slowly, so 20 sweeps).
+# ctest: cost=21
 import os
 import sys
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

@@ -17,6 +17,7 @@
 #    von Mises stress 836 -> 1208 -> 1823 MPa at the edge), on the screen
 #    once and in summary.json; the half disc, whose stress is smooth, does
 #    not warn in 5 steps.
+# ctest: cost=27
 import os
 import sys
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

@@ -17,7 +17,7 @@
 #  - prm/sliding_block.prm (on 3 levels) ends sliding at Q = f P (to 2%).
 #  - Projected Gauss-Seidel, the other solver that takes friction, reaches
 #    the active set method's J and force on 2 levels (to 1e-6).
-# ctest: mpirun
+# ctest: mpirun cost=42
 import csv
 import math
 import os

@@ -18,7 +18,7 @@
 #  - f = 0 gives the frictionless answer (force and J to 1e-8).
 #  - prm/sliding_block_3d.prm on 2 levels: every step converges, J never
 #    increases, the Newton steps per Tresca problem printed (3 levels:
-#    tests/solver/friction_3d_reference, ctest -C long).
+#    tests/solver/friction_3d_reference).
 # ctest: mpirun timeout=900
 import os
 import sys

@@ -10,7 +10,7 @@
 # prm/sliding_block_3d.prm on 3 levels (3,903 DoFs, five load steps of
 # Coulomb friction): every step converges and J never increases; the
 # Newton steps per Tresca problem printed.
-# ctest: long timeout=900
+# ctest: timeout=900 cost=153
 import os
 import sys
 

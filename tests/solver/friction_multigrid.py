@@ -17,7 +17,7 @@
 #    Tresca problem do not grow with the level (at most 6), on 3 levels
 #    the active set method's steps, on 4 levels the same steps on 4
 #    processes as on 1.
-# ctest: mpirun sanitize
+# ctest: mpirun sanitize cost=21
 import os
 import sys
 

@@ -26,6 +26,7 @@
 #    falls with the level: C_compl = 0.29 is refused at 5 levels.
 #  - A check on a coarser level than the finest adds a margin to C_compl
 #    (below): 0.28 is refused, 0.19 accepted and converges.
+# ctest: cost=9
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

@@ -22,7 +22,7 @@
 # constraints. The definiteness check runs
 # on level <= 2 (Solver/Definiteness check max dofs = 2000; on the 4194
 # DoF box it costs more than the solve).
-# ctest: timeout=600
+# ctest: timeout=600 cost=10
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

@@ -15,6 +15,7 @@
 #   mesh), and Hertz's half-width a is within a/50 of the point halfway
 #   between them (measured a/157, the half disc's contact zone 0.6%
 #   narrower than the half-space's; a/5.5 on the starting mesh).
+# ctest: cost=47
 import os
 import sys
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

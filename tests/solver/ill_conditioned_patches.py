@@ -10,7 +10,7 @@
 #    below the 3-level run's (0.132);
 #  - the plain W(3,3) cycle, 3 cycles from a zero start: no energy
 #    increase, J decreasing.
-# ctest: timeout=600 mpirun
+# ctest: timeout=600 mpirun cost=45
 import os
 import sys
 

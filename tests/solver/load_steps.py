@@ -22,7 +22,7 @@
 #  - SIGTERM once the screen says "Load step 2 of 3": exit code 4, one line
 #    naming the step under way; the finished steps published as one set
 #    (load_steps.csv and contact_000k.csv of exactly those).
-# ctest: mpirun sanitize
+# ctest: mpirun sanitize cost=11
 import csv
 import json
 import os

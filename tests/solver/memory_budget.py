@@ -16,7 +16,7 @@
 #    Adaptivity/Max DoFs.
 # Not under the sanitizers: ASan reserves terabytes of address space for its
 # shadow memory, and the program cannot start under ulimit -v.
-# ctest: no_sanitize
+# ctest: no_sanitize cost=12
 import json
 import os
 import subprocess

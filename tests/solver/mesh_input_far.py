@@ -10,6 +10,7 @@
 #  - Gmsh's unstructured hexahedra of the quarter ball
 #    (tests/meshes/quarter_ball_unstructured.geo; faces meeting in all
 #    orientations): converges, monotone and feasible.
+# ctest: cost=9
 import os
 import sys
 

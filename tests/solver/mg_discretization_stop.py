@@ -12,6 +12,7 @@
 # set solver: converged; J <= (1 + 0.1^2) J_ref (the criterion's promise:
 # J - J* = |e|_A^2 / 2 <= 0.1^2 J / 2, with margin); the stop came before the
 # tolerance run's (fewer or as many iterations).
+# ctest: cost=10
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

@@ -22,6 +22,7 @@
 # doc/cycle_type_results.md, which also times them: within the machine's
 # scatter of each other).
 # The previous binary refuses `Cycle = F` (Patterns::Selection("V|W")).
+# ctest: cost=8
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

@@ -39,7 +39,7 @@
 # changes), where the defect must be recomputed; taking it from the first
 # visit there too is off by 5e-9 and counts 30 visits instead of 29. That run is repeated on 2 processes, where the check's
 # products and norms span both.
-# ctest: timeout=600
+# ctest: timeout=600 cost=11
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

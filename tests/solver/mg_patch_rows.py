@@ -23,7 +23,7 @@
 # process), 0.36 against 1.35 MB (cube). Summing the ghost columns in local
 # order instead made the half disc on 3 processes fail to converge and
 # every comparison on several processes fail.
-# ctest: mpirun sanitize
+# ctest: mpirun sanitize cost=10
 import glob
 import os
 import sys

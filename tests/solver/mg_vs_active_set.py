@@ -17,6 +17,7 @@
 # coarse-solution start finds the whole contact set at once, so the coarse
 # obstacles of the truncated hierarchy are +inf); the zero-start runs of
 # mg_monotone_feasible exercise them.
+# ctest: cost=9
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

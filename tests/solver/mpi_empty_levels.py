@@ -18,7 +18,7 @@
 # iteration; the 3D cube (one coarse cell), 2 levels, default solver and
 # plain cycle; the elasticity benchmark without contact, 2 levels,
 # default solver and plain cycle.
-# ctest: timeout=900 mpirun
+# ctest: timeout=900 mpirun cost=33
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

@@ -31,7 +31,7 @@
 # solver there (2 and 3 processes). Only the one-process counts are printed
 # (those of N processes are asserted), so the output does not depend on
 # round-off.
-# ctest: timeout=900 mpirun
+# ctest: timeout=900 mpirun cost=21
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

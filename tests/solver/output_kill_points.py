@@ -13,7 +13,7 @@
 # back). Then, for the kill right after the
 # exchange, the next run is killed too, before each of the calls with
 # which it repairs the directory, and a third run checks the directory.
-# ctest: timeout=600
+# ctest: timeout=600 cost=40
 import os
 import re
 import sys

@@ -37,7 +37,7 @@
 # solver's force (1e-8 relative); the next four within 8 iterations to its
 # J (1e-8) and force (1e-8; 1e-6 for C_compl = 0); the last two within 8
 # and 15 iterations with a KKT residual below 1e-8.
-# ctest: timeout=900
+# ctest: timeout=900 cost=63
 import sys
 import os
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree

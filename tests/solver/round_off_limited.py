@@ -17,6 +17,7 @@
 #  - C_eq = 1e10 on the square (5 levels, Max iterations 30): J below its
 #    own round-off; not "diverged", the warning names the weights.
 # Printed: each run's round-off of J over J, rounded to a power of ten.
+# ctest: cost=9
 import math
 import os
 import sys

@@ -24,6 +24,7 @@
 #   the run prints a note naming the accurate value, and only there;
 # - fixed-fraction marking with a Fraction below one cell refines a cell
 #   per step (ceil(Fraction N), not its floor, which would be none).
+# ctest: cost=28
 import math
 import os
 import sys

@@ -11,7 +11,7 @@
 # reference length (Scaling): the parts are given the full model's 2.
 # Also refused, one line each: a roller meeting the contact boundary where
 # the obstacle normal is not a free axis, and malformed per-id lists.
-# ctest: mpirun
+# ctest: mpirun cost=9
 import csv
 import os
 import sys

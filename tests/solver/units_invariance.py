@@ -22,7 +22,7 @@
 # square, stable and converged, with forces approaching the incompressible
 # one; and gravity (rho g = 7850 * 9.81 N/m^3, no push) on the 0.1 m steel
 # square against the same dimensionless problem in unit scale.
-# ctest: timeout=600 mpirun
+# ctest: timeout=600 mpirun cost=20
 import csv
 import os
 import sys

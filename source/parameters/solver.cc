@@ -90,7 +90,10 @@ namespace FoslsContact
                         "times rho/(1-rho) where the rate rho of the last two "
                         "iterations is above 1/2 (the error of a slowly "
                         "converging run), is below Tolerance times that of the "
-                        "first correction (an error reduction factor).");
+                        "first correction (an error reduction factor; in the "
+                        "Coulomb fixed point's later Tresca problems, the "
+                        "larger of that and the first correction of the load "
+                        "step's first Tresca problem).");
       prm.declare_entry("Max iterations",
                         std::to_string(defaults.max_iterations),
                         Patterns::Integer(1),

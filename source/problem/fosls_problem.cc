@@ -335,6 +335,9 @@ namespace FoslsContact
       }
     run_solver();
     fixed_point_iterations = 1;
+    // (the later Tresca problems' tolerance relative to the first one's
+    // first correction: Monitor::set_reference_correction())
+    const double first_correction = monitor->first_correction();
     if (scene.friction_law() == Parameters::Friction::Law::coulomb)
       for (;;)
         {
@@ -359,7 +362,7 @@ namespace FoslsContact
           slip_bounds = s;
           friction_law->set_bounds(qp, slip_bounds);
           ++fixed_point_iterations;
-          run_solver();
+          run_solver(first_correction);
         }
     report_solve();
   }
@@ -367,7 +370,7 @@ namespace FoslsContact
 
   template <int dim>
   void
-  FoslsProblem<dim>::run_solver()
+  FoslsProblem<dim>::run_solver(const double reference_correction)
   {
     TimerOutput::Scope t(timer, "Solve");
     Timer              wall;
@@ -376,6 +379,7 @@ namespace FoslsContact
                                         pcout,
                                         SolverChoice<dim>::name(parameters.solver.type));
     monitor->set_functional_unit(scene.scaling().functional(dim));
+    monitor->set_reference_correction(reference_correction);
     const CommunicationCounter before = communication();
     const LevelVector          start(solution);
     solver->solve(qp, solution, *monitor);

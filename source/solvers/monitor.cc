@@ -52,7 +52,7 @@ namespace FoslsContact
     // The solution of a least-squares problem has a small energy (J(x*)
     // is the discretization error), so corrections are measured relative
     // to the first one: the criterion is an error reduction factor.
-    const double norm_x = std::max(history[1].correction, 1e-300);
+    const double norm_x = tolerance_reference();
     // Both the round-off floor and the tolerance take the rate into
     // account: at a rate rho the error is about rho/(1-rho) times the
     // correction, so where rho > 1/2 that multiple of the correction is
@@ -74,7 +74,7 @@ namespace FoslsContact
                     at_floor                                                          ? "round-off floor" :
                     parameters.stopping == Parameters::Solver::Stopping::tolerance ? "tolerance" :
                                                                                      "discretization accuracy";
-    if (!stop && detect_stalls && rules.stalled(history, active_set_changed_at, stall_error))
+    if (!stop && detect_stalls && rules.stalled(history, active_set_changed_at, norm_x, stall_error))
       {
         stop   = true;
         reason = "stalled";

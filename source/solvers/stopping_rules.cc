@@ -81,6 +81,7 @@ namespace FoslsContact
   bool
   StoppingRules::stalled(const std::vector<IterationRecord> &history,
                          const unsigned int                  active_set_changed_at,
+                         const double                        first_correction,
                          double &                            error_ratio) const
   {
     // The last stall_window iterations, with the active set unchanged (the
@@ -109,7 +110,7 @@ namespace FoslsContact
       {
         if (rho < 1.)
           error = history[k].correction * rho / (1. - rho);
-        target = parameters.tolerance * history[1].correction;
+        target = parameters.tolerance * first_correction;
       }
     else
       {

@@ -104,8 +104,12 @@ namespace FoslsContact
      * the last solution) to Friction/Fixed point tolerance.
      */
     void solve();
-    /** One run of the solver on qp from solution (and the cross check). */
-    void run_solver();
+    /**
+     * One run of the solver on qp from solution (and the cross check), its
+     * tolerance relative to at least @p reference_correction
+     * (Monitor::set_reference_correction()).
+     */
+    void run_solver(const double reference_correction = 0);
     /** The KKT residuals and the end of the solve, printed. */
     void report_solve();
     /**

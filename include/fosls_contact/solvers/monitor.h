@@ -10,6 +10,7 @@
 #include <fosls_contact/solvers/iteration_record.h>
 #include <fosls_contact/solvers/stopping_rules.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,29 @@ namespace FoslsContact
       has_converged     = false;
       reason            = "fixed point";
       not_converged_why = why;
+    }
+
+    /**
+     * A lower bound for the first correction that Solver/Tolerance is
+     * relative to. The Coulomb fixed point (FoslsProblem::solve()) gives
+     * each Tresca problem after a load step's first the first correction
+     * of that first one: these problems start next to their solution, and
+     * a factor 1e-8 of their own first correction, which shrinks with the
+     * fixed point's change of the slip bounds, lies below the round-off
+     * floor of the corrections, so that every problem ran until the
+     * monitor found that floor, more iterations the finer the mesh
+     * (doc/method.md, section 7.6).
+     */
+    void set_reference_correction(const double correction) { reference_correction = correction; }
+    /** The energy norm of the first correction (0 before it). */
+    double first_correction() const { return history.size() > 1 ? history[1].correction : 0.; }
+    /**
+     * What the tolerance is relative to: the first correction, or the
+     * reference correction where that is larger.
+     */
+    double tolerance_reference() const
+    {
+      return std::max({first_correction(), reference_correction, 1e-300});
     }
 
     /**
@@ -192,6 +216,7 @@ namespace FoslsContact
     bool                          detect_divergence      = false;
     std::string                   reason;
     double                        stall_error            = 0;
+    double                        reference_correction   = 0;
     /** set_not_converged()'s reason. */
     std::string not_converged_why;
   };

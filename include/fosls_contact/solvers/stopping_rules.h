@@ -39,12 +39,14 @@ namespace FoslsContact
     bool at_discretization_accuracy(const std::vector<IterationRecord> &history,
                                     const unsigned int active_set_changed_at) const;
     /**
-     * The stall test of Monitor::enable_stall_detection() on @p history;
-     * for a stall, @p error_ratio is the estimated error over the stopping
-     * rule's target.
+     * The stall test of Monitor::enable_stall_detection() on @p history,
+     * the tolerance relative to @p first_correction
+     * (Monitor::tolerance_reference()); for a stall, @p error_ratio is the
+     * estimated error over the stopping rule's target.
      */
     bool stalled(const std::vector<IterationRecord> &history,
                  const unsigned int                  active_set_changed_at,
+                 const double                        first_correction,
                  double &                            error_ratio) const;
 
   private:

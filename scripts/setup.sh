@@ -12,8 +12,9 @@
 # Environment: FOSLS_JOBS (default 2) = parallel make jobs; FOSLS_TARGET
 # (default all) = the make target (.ci/run: sanitize_tests);
 # FOSLS_UNITY_BUILD=ON|OFF (default: as configured before, else OFF) = CMake's
-# unity build, which compiles the sources in batches of 8: 35% less CPU
-# for a build from scratch (548 s against 841 s measured here), but a
+# unity build, which compiles the sources in batches of 8: 38% less CPU
+# for a build from scratch (577 s against 929 s, built one after the
+# other here), but a
 # change to one source recompiles its batch, so .ci/run uses it and a
 # working copy does not.
 

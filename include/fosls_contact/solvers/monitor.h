@@ -91,7 +91,7 @@ namespace FoslsContact
      * fixed point's change of the slip bounds, lies below the round-off
      * floor of the corrections, so that every problem ran until the
      * monitor found that floor, more iterations the finer the mesh
-     * (doc/method.md, section 7.6).
+     * (doc/method.md, section 7.7, "Stopping").
      */
     void set_reference_correction(const double correction) { reference_correction = correction; }
     /** The energy norm of the first correction (0 before it). */

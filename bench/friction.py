@@ -109,8 +109,7 @@ def solver_runs(binary, scene, settings, level, reference_levels, tag, solvers=N
     for solver, setting in (solvers or SOLVERS).items():
         if solver != "multigrid" and level > reference_levels:
             continue
-        extra = setting if isinstance(setting, list) else [setting]
-        runs[solver] = run(binary, scene, settings + ["Geometry/Levels=%d" % level] + extra,
+        runs[solver] = run(binary, scene, settings + ["Geometry/Levels=%d" % level, setting],
                            "%s_%d_%s" % (tag, level, solver.replace(" ", "_")))
     return runs
 

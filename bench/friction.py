@@ -15,7 +15,10 @@ contact), level by level:
   half-plane, then pulled to Q = 0.5 f P and 0.8 f P), levels 6 to
   --cm-max-level, against Cattaneo and Mindlin's solution: the program's
   own comparison of each step (the screen's "Hertz" and "Cattaneo-Mindlin"
-  lines).
+  lines); prm/cattaneo_mindlin_3d.prm, the same with a sphere in 3D,
+  levels 2 to --cm3d-max-level (default 1: none, since on 2 levels the
+  pull's Coulomb fixed point crawls; doc/method.md section 7.7), the
+  multigrid alone.
 
 For each run: the DoFs, the Tresca problems (one per step for Tresca, the
 fixed point's for Coulomb), the Newton steps per Tresca problem (largest
@@ -31,7 +34,7 @@ bench/results/friction/).
     friction.py [--square-max-level L] [--block-max-level L] [--cm-max-level L]
                 [--block3d-max-level L]
                 [--reference-max-level L] [--block-reference-max-level L]
-                [--cm-reference-max-level L] [--bin PATH]
+                [--cm-reference-max-level L] [--cm3d-max-level L] [--bin PATH]
 """
 import argparse
 import json
@@ -141,27 +144,41 @@ def section(binary, title, scene, settings, law, levels, reference_levels, tag, 
 HERTZ = re.compile(r"pressure error \S+ \(relative l2 at the contact vertices\), (\S+) "
                    r"\(relative L2 on the contact boundary\)")
 CATTANEO_MINDLIN = re.compile(
-    r"Cattaneo-Mindlin \(f = \S+, Q = \S+, Q/\(f P\) = (\S+)\): stick zone \|x\| < c = (\S+) "
-    r"along Q\n\s+computed: stick zone from (\S+) to (\S+) \((\S+) and (\S+) vertex spacings "
+    r"Cattaneo-Mindlin \(f = \S+, Q = \S+, Q/\(f P\) = (\S+)\): stick (?:zone \|x\||disc r) "
+    r"< c = (\S+) along Q\n\s+computed: stick zone from (\S+) to (\S+) \((\S+) and (\S+) vertex spacings "
     r"from -c and c\), tangential traction error (\S+) of \|q\|, (\S+) of \|f p\|")
 
 
-def cattaneo_mindlin_section(binary, levels, reference_levels):
-    """prm/cattaneo_mindlin.prm level by level: the program's comparison of
-    each pulled step with Cattaneo and Mindlin's solution, and the largest
-    pressure error against Hertz's of the three steps."""
+CM_2D = {"scene": "cattaneo_mindlin.prm", "tag": "cattaneo_mindlin", "spacing": 0.5,
+         "title": "## `prm/cattaneo_mindlin.prm`: Cattaneo-Mindlin, Coulomb (f = 0.3)\n\n"
+                  "Pressed with P = 0.01 (Hertz's a = 0.080), then pulled to Q = 0.0015 and "
+                  "0.0024. "}
+CM_3D = {"scene": "cattaneo_mindlin_3d.prm", "tag": "cattaneo_mindlin_3d", "spacing": 0.0625,
+         "title": "## `prm/cattaneo_mindlin_3d.prm`: Cattaneo-Mindlin in 3D, a sphere, Coulomb "
+                  "(f = 0.3)\n\n"
+                  "Pressed with P = 0.001365 (Hertz's a = 0.080), then pulled to Q = 0.5 f P and "
+                  "0.8 f P; c = a (1 - Q/(f P))^(1/3), the stick disc's ends measured on the "
+                  "contact vertices along Q through the contact point. "}
+
+
+def cattaneo_mindlin_section(binary, levels, reference_levels, case=CM_2D):
+    """@p case's scene (prm/cattaneo_mindlin.prm or prm/cattaneo_mindlin_3d.prm)
+    level by level: the program's comparison of each pulled step with
+    Cattaneo and Mindlin's solution, and the largest pressure error against
+    Hertz's of the three steps. (case["spacing"]: the contact vertex spacing
+    on one level)"""
     rows = ["| level | DoFs | vertex spacing | wall time [s] | Newton steps per problem (max) "
             "| pressure error (max) | Q/(f P) | c | stick zone | ends from -c, c [spacings] "
             "| traction error of q | forces vs. active set |",
             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for level in levels:
-        runs = solver_runs(binary, "cattaneo_mindlin.prm", [], level, reference_levels,
-                           "cattaneo_mindlin")
+        runs = solver_runs(binary, case["scene"], [], level, reference_levels, case["tag"],
+                           SOLVERS if case is CM_2D else SOLVERS_3D)
         r = runs["multigrid"]
         pressure = max(float(m.group(1)) for m in HERTZ.finditer(r["screen"]))
         difference = "%.1e" % force_difference(r["summary"], runs["active set"]["summary"]) \
             if "active set" in runs else ""
-        spacing = 0.5 / 2 ** (level - 1)
+        spacing = case["spacing"] / 2 ** (level - 1)
         for k, m in enumerate(m for m in CATTANEO_MINDLIN.finditer(r["screen"])
                               if float(m.group(1)) > 1e-6):
             ratio, c, lo, hi, e_lo, e_hi, of_q, _ = m.groups()
@@ -170,9 +187,7 @@ def cattaneo_mindlin_section(binary, levels, reference_levels):
                 if k == 0 else "| | | | | |"
             rows.append("%s | %s | %s | %s to %s | %s, %s | %s | %s |" % (
                 head, ratio, c, lo, hi, e_lo, e_hi, of_q, difference if k == 0 else ""))
-    text = ("## `prm/cattaneo_mindlin.prm`: Cattaneo-Mindlin, Coulomb (f = 0.3)\n\n"
-            "Pressed with P = 0.01 (Hertz's a = 0.080), then pulled to Q = 0.0015 and 0.0024. "
-            "The pressure error is the largest of the three steps (relative L2 on the contact "
+    text = (case["title"] + "The pressure error is the largest of the three steps (relative L2 on the contact "
             "boundary); the stick zone's ends lie midway between the outermost stick vertex and "
             "the next one; the traction error is the relative L2 error of the tangential "
             "traction against Cattaneo-Mindlin's q.\n\n" + "\n".join(rows) + "\n")
@@ -189,6 +204,9 @@ def main():
     ap.add_argument("--block3d-max-level", type=int, default=3)
     ap.add_argument("--cm-max-level", type=int, default=9)
     ap.add_argument("--cm-reference-max-level", type=int, default=6)
+    # (1: none; on 2 levels the pull's Coulomb fixed point crawls in its
+    # third Tresca problem, doc/method.md section 7.7)
+    ap.add_argument("--cm3d-max-level", type=int, default=1)
     ap.add_argument("--bin", default=BIN)
     args = ap.parse_args()
     os.makedirs(RES, exist_ok=True)
@@ -214,6 +232,9 @@ def main():
         cattaneo_mindlin_section(args.bin, range(6, args.cm_max_level + 1),
                                  args.cm_reference_max_level),
     ]
+    if args.cm3d_max_level >= 2:
+        parts.append(cattaneo_mindlin_section(args.bin, range(2, args.cm3d_max_level + 1), 0,
+                                              CM_3D))
     with open(DOC, "w") as f:
         f.write("\n".join(parts))
     print("wrote", DOC)

@@ -42,7 +42,10 @@ namespace FoslsContact
     const double         P   = hertz.normal_force();
     tangential_force         = hertz.force_factor() * t.norm();
     ratio                    = f > 0 && P > 0 ? tangential_force / (f * P) : inf;
-    c                        = ratio < 1 ? hertz.half_width() * std::sqrt(1. - ratio) : 0.;
+    // (Johnson eqs. 7.33 and 7.42)
+    c = ratio < 1 ?
+          hertz.half_width() * std::pow(1. - ratio, hertz.cylinder() ? 1. / 2 : 1. / 3) :
+          0.;
     // the direction of Q; without Q any tangent (q = 0 along all of them)
     Tensor<1, dim> e = t;
     if (e.norm() > 0)
@@ -59,7 +62,11 @@ namespace FoslsContact
         e /= e.norm();
       }
 
-    // (position along Q, stick) of every contact vertex, in order
+    // (position along Q, stick) of every contact vertex on the line through
+    // the contact point along Q, in order (in 2D every contact vertex; on
+    // a sphere's contact the stick zone is a disc, and that line crosses
+    // it along a diameter, so the ends found on it are at -c and c)
+    const double                         off_line = 1e-6 * hertz.half_width();
     std::vector<std::pair<double, bool>> along;
     double                               difference = 0, norm_q = 0, norm_fp = 0;
     for (const auto &row : rows)
@@ -75,8 +82,10 @@ namespace FoslsContact
         difference += w * (q_h - q) * (q_h - q);
         norm_q += w * q * q;
         norm_fp += w * std::pow(f * hertz.pressure(r), 2);
-        along.emplace_back((p - hertz.contact_point()) * e,
-                           row[Row::in_contact] == 1 && row[Row::status] == 1);
+        const Tensor<1, dim> from = p - hertz.contact_point();
+        const Tensor<1, dim> across = from - (from * e) * e - (from * n) * n;
+        if (across.norm() <= off_line)
+          along.emplace_back(from * e, row[Row::in_contact] == 1 && row[Row::status] == 1);
       }
     // (without a tangential force beyond round-off q is 0, and so is a
     // norm relative to it)
@@ -116,7 +125,8 @@ namespace FoslsContact
     out << std::setprecision(4) << "Cattaneo-Mindlin (f = " << f << ", Q = " << tangential_force
         << ", Q/(f P) = " << std::setprecision(3) << ratio << std::setprecision(4) << "): ";
     if (ratio < 1)
-      out << "stick zone |x| < c = " << c << " along Q";
+      out << (hertz.cylinder() ? "stick zone |x| < c = " : "stick disc r < c = ") << c
+          << " along Q";
     else
       out << "the whole contact slips (c = 0)";
     out << "\n       computed: ";

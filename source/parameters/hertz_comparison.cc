@@ -24,10 +24,11 @@ namespace FoslsContact
                         "against the computed contact edge, peak pressure and the "
                         "relative l2 error of the pressure at the contact vertices, "
                         "and writes them to summary.json (\"hertz\"), which "
-                        "scripts/plot.py draws. A cylinder in 2D with Coulomb "
-                        "friction is compared with Cattaneo and Mindlin's solution "
-                        "for the computed tangential force too (its stick zone and "
-                        "tangential traction; summary.json \"cattaneo_mindlin\").");
+                        "scripts/plot.py draws. A cylinder in 2D or a sphere in 3D "
+                        "with Coulomb friction is compared with Cattaneo and "
+                        "Mindlin's solution for the computed tangential force too "
+                        "(its stick zone and tangential traction; summary.json "
+                        "\"cattaneo_mindlin\").");
       prm.declare_entry("Radius",
                         "0",
                         Patterns::Double(0),

@@ -499,10 +499,9 @@ namespace FoslsContact
     hertz.evaluate(force, rows);
     summary["hertz"] = hertz.json();
     pcout << hertz.report() << std::endl;
-    // (the cylinder's solution: the sphere's stick zone, c = a (1 -
-    // Q/(f P))^(1/3), is not compared by the program; Coulomb's f is
-    // dimensionless)
-    if (dim == 2 && parameters.hertz.shape == Parameters::HertzComparison::Shape::cylinder &&
+    // (a cylinder in 2D or a sphere in 3D: Cattaneo and Mindlin's
+    // solutions; Coulomb's f is dimensionless)
+    if ((dim == 2) == (parameters.hertz.shape == Parameters::HertzComparison::Shape::cylinder) &&
         scene.friction_law() == Parameters::Friction::Law::coulomb)
       {
         CattaneoMindlin<dim> cattaneo_mindlin(hertz, scene.friction_data().value(contact_point));

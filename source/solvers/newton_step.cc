@@ -269,6 +269,7 @@ namespace FoslsContact
   NewtonStep<dim>::pair_stop(const ConstrainedQP &          qp,
                              const unsigned int             i,
                              const TangentialPair::Vector2 &y,
+                             const bool                     circles,
                              TangentialPair::Vector2 &      stop) const
   {
     // a traction pair that the direction takes out of its disc stops on
@@ -279,9 +280,9 @@ namespace FoslsContact
     if (qp.role[i] == DoFRole::traction)
       {
         // (a pair that moves along its circle leaves it to second order
-        // only: the line search's projection takes it back)
+        // only: it stops on it in the last round alone, @p circles)
         const double s = qp.friction.traction_bounds.local_element(i);
-        if (on_circle[i] || !(TangentialPair::norm(y) > s))
+        if ((on_circle[i] && !circles) || !(TangentialPair::norm(y) > s))
           return false;
         stop = TangentialPair::project_to_disc(y, s);
         return true;
@@ -329,6 +330,10 @@ namespace FoslsContact
     TruncatedOperator op{A, fixed, pair_directions, pair_curvatures, qp.new_vector()};
     LevelVector increment = qp.new_vector(), rhs = qp.new_vector(), Ae = qp.new_vector();
     double      tolerance = 0;
+    // (the last round, after no DoF passes its bound any more: the pairs
+    // on their circles held where the direction turns them; see below)
+    bool circles = false;
+    has_tangential_direction = false;
     for (unsigned int round = 0; round < max_rounds + 1; ++round)
       {
         if (linear_role != linear_role_used)
@@ -374,40 +379,70 @@ namespace FoslsContact
             // at most krylov_steps steps: the last iterate is the direction
           }
         d += increment;
-        bool violated = false;
-        for (unsigned int i = 0; round < max_rounds && i < n_owned; ++i)
-          if (linear_role[i] == DoFRole::free && qp.has_friction() &&
-              qp.friction.partner_of(i) != FrictionTerms::no_partner)
-            {
-              const unsigned int j = qp.friction.partner_of(i);
-              TangentialPair::Vector2 stop;
-              if (j > i &&
-                  pair_stop(qp,
-                            i,
-                            {x.local_element(i) + d.local_element(i),
-                             x.local_element(j) + d.local_element(j)},
-                            stop))
-                for (const auto &[k, value] : {std::make_pair(i, stop[0]), std::make_pair(j, stop[1])})
+        if (circles)
+          break;
+        const auto stop_violations = [&](const bool circles) {
+          bool violated = false;
+          for (unsigned int i = 0; round < max_rounds && i < n_owned; ++i)
+            if (linear_role[i] == DoFRole::free && qp.has_friction() &&
+                qp.friction.partner_of(i) != FrictionTerms::no_partner)
+              {
+                const unsigned int      j = qp.friction.partner_of(i);
+                TangentialPair::Vector2 stop;
+                if (j > i &&
+                    pair_stop(qp,
+                              i,
+                              {x.local_element(i) + d.local_element(i),
+                               x.local_element(j) + d.local_element(j)},
+                              circles,
+                              stop))
+                  for (const auto &[k, value] :
+                       {std::make_pair(i, stop[0]), std::make_pair(j, stop[1])})
+                    {
+                      linear_role[k] = DoFRole::fixed;
+                      fixed.push_back(k);
+                      increment.local_element(k) = value - x.local_element(k);
+                      violated                   = true;
+                    }
+              }
+            else if (linear_role[i] == DoFRole::free && !circles)
+              {
+                const double stop = stop_of(qp, i, x.local_element(i) + d.local_element(i));
+                if (!std::isnan(stop))
                   {
-                    linear_role[k] = DoFRole::fixed;
-                    fixed.push_back(k);
-                    increment.local_element(k) = value - x.local_element(k);
+                    linear_role[i] = DoFRole::fixed;
+                    fixed.push_back(i);
+                    increment.local_element(i) = stop - x.local_element(i);
                     violated                   = true;
                   }
-            }
-          else if (linear_role[i] == DoFRole::free)
-            {
-              const double stop = stop_of(qp, i, x.local_element(i) + d.local_element(i));
-              if (!std::isnan(stop))
-                {
-                  linear_role[i] = DoFRole::fixed;
-                  fixed.push_back(i);
-                  increment.local_element(i) = stop - x.local_element(i);
-                  violated                   = true;
-                }
-            }
-        if (Utilities::MPI::max(violated ? 1u : 0u, qp.get_communicator()) == 0)
-          break;
+              }
+          return Utilities::MPI::max(violated ? 1u : 0u, qp.get_communicator()) == 1;
+        };
+        if (!stop_violations(false))
+          {
+            // No DoF passes its bound. A pair on its circle that d turns
+            // leaves the circle along its tangent; P_K takes it back onto
+            // the circle radially, a local move against the stiffness of
+            // A, which the rest of d does not follow: that costs J to
+            // fourth order in the step and dwarfs the model's decrease
+            // where d turns the traction by a few tenths of its radius
+            // (the 3D Cattaneo-Mindlin pull: J along P_K(x + t d) rose
+            // like t^4 to 3,000 times the model's decrease at t = 1, and
+            // the iteration crawled at 0.97 per step on the steps of
+            // the halved path). One more round holds such pairs at the
+            // points of their circles d turns them to and solves for the
+            // rest, which then follows them; the line search compares
+            // that direction with d (both feasible, J never increases).
+            // (round < max_rounds: else the cap of the rounds has been
+            // reached and d stays as it is)
+            if (round >= max_rounds || !qp.has_friction() || !qp.friction.has_pairs())
+              break;
+            tangential_direction = d;
+            if (!stop_violations(true))
+              break;
+            has_tangential_direction = true;
+            circles                  = true;
+          }
         // the owners' decisions to the ghost copies (the smoother's roles)
         exchange_ghosts(qp.partitioner, linear_role);
       }
@@ -685,6 +720,41 @@ namespace FoslsContact
                                const LevelVector &  d,
                                const LevelVector &  residual) const
   {
+    LevelVector  e            = qp.new_vector();
+    double       t            = 0;
+    bool         exact_bounds = false;
+    const double decrease =
+      best_step(qp, x, d, residual, has_tangential_direction, e, t, exact_bounds);
+    if (has_tangential_direction)
+      {
+        LevelVector  e_t     = qp.new_vector();
+        double       t_t     = 0;
+        bool         exact_t = false;
+        const double decrease_t =
+          best_step(qp, x, tangential_direction, residual, false, e_t, t_t, exact_t);
+        if (decrease_t > decrease)
+          {
+            if (decrease_t > 0)
+              move(qp, x, e_t, t_t, exact_t);
+            return;
+          }
+      }
+    if (decrease > 0)
+      move(qp, x, e, t, exact_bounds);
+  }
+
+
+  template <int dim>
+  double
+  NewtonStep<dim>::best_step(const ConstrainedQP &qp,
+                             const LevelVector &  x,
+                             const LevelVector &  d,
+                             const LevelVector &  residual,
+                             const bool           chords,
+                             LevelVector &        e_best,
+                             double &             t_best,
+                             bool &               exact_bounds) const
+  {
     // Two feasible steps that decrease J; the one that decreases it more is
     // taken (the same on every process: the decreases are sums over all of
     // them).
@@ -709,7 +779,7 @@ namespace FoslsContact
     vmult(qp.matrix, Ad, d);
     const double dAd = d * Ad, dr = d * residual;
     if (!(dAd > 0))
-      return;
+      return 0.;
     // (J is convex along d: its minimizer over [0, t_feasible] is the
     // unbounded one, cut there)
     double t_feasible = std::numeric_limits<double>::infinity();
@@ -726,7 +796,7 @@ namespace FoslsContact
         {
           const unsigned int j = qp.friction.partner_of(i);
           if (qp.role[i] != DoFRole::traction || j == FrictionTerms::no_partner || j < i ||
-              on_circle[i])
+              (on_circle[i] && !chords))
             continue;
           const double d_1 = d.local_element(i), d_2 = d.local_element(j);
           const double x_1 = x.local_element(i), x_2 = x.local_element(j);
@@ -759,7 +829,10 @@ namespace FoslsContact
     // (a 3D traction pair that moves along its circle leaves the disc at
     // once, to second order: its step a) is the segment to the projection
     // of x + t_d d, on which J is convex as on b)'s)
+    // (a pair held on a chord of its circle stays in its disc up to t = 1:
+    // the step along d is exact there)
     const bool circles =
+      !chords &&
       Utilities::MPI::max(std::find(on_circle.begin(), on_circle.end(), true) != on_circle.end() ?
                             1u :
                             0u,
@@ -797,16 +870,27 @@ namespace FoslsContact
       }
     double       t_p        = 0;
     const double decrease_p = projected(t_unbounded, step, t_p);
-    if (!(decrease_p > 0) && !(decrease_d > 0))
-      return;
     // (the projected step puts the obstacles' DoFs on their bounds
     // already, up to the round-off of x + (ub - x))
+    exact_bounds = false;
     if (decrease_p > decrease_d)
-      move(qp, x, step, t_p, false);
-    else if (circles)
-      move(qp, x, step_d, t_a, false);
+      {
+        e_best.swap(step);
+        t_best = t_p;
+        return decrease_p;
+      }
+    if (circles)
+      {
+        e_best.swap(step_d);
+        t_best = t_a;
+      }
     else
-      move(qp, x, d, t_d, true);
+      {
+        e_best       = d;
+        t_best       = t_d;
+        exact_bounds = true;
+      }
+    return decrease_d;
   }
 
   template class NewtonStep<2>;

@@ -8,7 +8,10 @@
 //    the outermost stick vertex and the next one);
 //  - a traction 1% above q has the traction error 0.01;
 //  - Q = f P: c = 0, no stick vertex, and summary.json's stick zone null;
-//  - the screen report names c and the stick zone.
+//  - the screen report names c and the stick zone;
+//  - a sphere in 3D (Q = 0.5 f P along +x, vertices on a 101 x 101 grid
+//    0.004 apart): c = a (1 - Q/(f P))^(1/3), the traction error 0, the
+//    stick disc's ends along Q within half a vertex spacing of -c and c.
 // ctest: sanitize
 #include <fosls_contact/output/cattaneo_mindlin.h>
 
@@ -81,6 +84,50 @@ namespace
   }
 
 
+  /**
+   * A sphere's contact: the table of Hertz's pressure and Mindlin's
+   * traction for Q along +x on the vertices of a grid in the plane z = 0,
+   * and CattaneoMindlin's JSON object and report for it.
+   */
+  std::pair<std::string, std::string>
+  compare_sphere(const double Q)
+  {
+    using Row3 = ContactRow<3>;
+    const double a = std::cbrt(3 * P * R / (4 * 4)), p0 = 3 * P / (2 * numbers::PI * a * a);
+    const double c = a * std::cbrt(1 - Q / (f * P));
+    std::vector<Row3::Values> rows;
+    for (int i = -50; i <= 50; ++i)
+      for (int j = -50; j <= 50; ++j)
+        {
+          const double x = i * h, y = j * h, r = std::hypot(x, y);
+          const double p = r < a ? p0 * std::sqrt(1 - r * r / (a * a)) : 0.;
+          const double q = f * p - (r < c ? f * p0 * (c / a) * std::sqrt(1 - r * r / (c * c)) : 0.);
+          Row3::Values row{};
+          row[Row3::x]          = x;
+          row[Row3::x + 1]      = y;
+          row[Row3::sigma_nn]   = -p;
+          row[Row3::share]      = h * h;
+          row[Row3::in_contact] = p > 0 ? 1 : 0;
+          row[Row3::traction_t] = q;
+          row[Row3::status]     = p == 0 ? 0 : r < c ? 1 : 2;
+          rows.push_back(row);
+        }
+    Parameters::HertzComparison sphere;
+    sphere.shape         = Parameters::HertzComparison::Shape::sphere;
+    sphere.radius        = R;
+    sphere.contact_point = {0, 0, 0};
+    Parameters::Material material;
+    material.youngs_modulus = 3;
+    material.poisson_ratio  = 0.5;
+    const Tensor<1, 3> force({Q, 0., P});
+    HertzPressure<3>   hertz(sphere, material, Tensor<1, 3>({0., 0., -1.}));
+    hertz.evaluate(force, rows);
+    CattaneoMindlin<3> cm(hertz, f);
+    cm.evaluate(force, rows);
+    return {cm.json(), cm.report()};
+  }
+
+
   /** The JSON's number after "key": (null as NaN). */
   double
   json_value(const std::string &json, const std::string &key)
@@ -125,5 +172,20 @@ main()
           report.find("the whole contact slips") != std::string::npos &&
           report.find("no vertex sticks") != std::string::npos,
         "Q = f P: c = 0, no stick vertex, the whole contact slips");
+  {
+    const auto [json, report] = compare_sphere(0.5 * f * P);
+    const double a_sphere     = std::cbrt(3 * P * R / (4 * 4));
+    // (summary.json's numbers have 12 significant digits)
+    check(std::abs(json_value(json, "c") - a_sphere * std::cbrt(0.5)) <= 1e-11 * a_sphere,
+          "sphere, Q = f P / 2: c = a (1/2)^(1/3)");
+    check(json_value(json, "traction_error") <= 1e-12 &&
+            json_value(json, "traction_error_of_slip_limit") <= 1e-12,
+          "sphere, Q = f P / 2: the exact traction has error 0");
+    check(json_value(json, "stick_from_error") <= 0.5 && json_value(json, "stick_to_error") <= 0.5,
+          "sphere, Q = f P / 2: the stick disc's ends along Q within half a vertex spacing of "
+          "-c and c");
+    check(report.find("stick disc r < c = ") != std::string::npos,
+          "sphere: the report names the stick disc");
+  }
   return exit_code();
 }

@@ -15,22 +15,26 @@ namespace FoslsContact
 
   /**
    * Cattaneo and Mindlin's tangential traction for the Hertz contact of a
-   * cylinder (HertzPressure) pressed with the normal force P and then
-   * loaded, monotonically, by a tangential force Q < f P under Coulomb
-   * friction with the coefficient f (Johnson, *Contact Mechanics*, §7.1):
-   * the middle of the contact sticks, |x| < c with c = a sqrt(1 - Q/(f P)),
-   * and the tangential traction along Q is
+   * cylinder in 2D or a sphere in 3D (HertzPressure) pressed with the
+   * normal force P and then loaded, monotonically, by a tangential force
+   * Q < f P under Coulomb friction with the coefficient f (Johnson,
+   * *Contact Mechanics*, §7.1 and §7.2): the middle of the contact sticks,
+   * |x| < c with c = a sqrt(1 - Q/(f P)) (cylinder), or the disc r < c
+   * with c = a (1 - Q/(f P))^(1/3) (sphere), and the tangential traction
+   * along Q is
    *   q(x) = f p0 [sqrt(1 - x^2/a^2) - (c/a) sqrt(1 - x^2/c^2)]   for |x| < c,
    *   q(x) = f p(x)                                               for c <= |x| < a,
-   * x measured from the contact point along Q. Past Q = f P the whole
-   * contact slips (c = 0). The solution assumes that the normal and the
+   * x the distance from the contact point (along Q for the cylinder).
+   * Past Q = f P the whole contact slips (c = 0). The solution assumes that the normal and the
    * tangential problems decouple: Dundurs' constant beta = 0, which holds
    * for a rigid obstacle and an incompressible body (lambda = inf); with
    * beta != 0 the normal pressure itself brings tangential tractions.
    *
    * Against the computed contact table (ContactTable::rows() with its
-   * friction columns): the stick zone's ends along Q, each placed midway
-   * between its outermost stick vertex and the next vertex beyond it, and
+   * friction columns): the stick zone's ends along Q (on a sphere's
+   * contact, among the vertices on the line through the contact point
+   * along Q), each placed midway between its outermost stick vertex and
+   * the next vertex beyond it, and
    * their distances from +-c in units of that vertex spacing (the
    * computed end is within one spacing of c when this is <= 1); and the
    * relative L2 error of the tangential traction along Q on the contact

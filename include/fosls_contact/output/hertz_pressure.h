@@ -65,6 +65,8 @@ namespace FoslsContact
     const Tensor<1, dim> &contact_point() const { return center; }
     /** The unit obstacle normal at the contact point. */
     const Tensor<1, dim> &contact_normal() const { return normal; }
+    /** Whether the obstacle is a cylinder (else a sphere). */
+    bool cylinder() const;
 
     /**
      * The relative l2 error of the computed pressure at the contact
@@ -86,8 +88,6 @@ namespace FoslsContact
     std::string json() const;
 
   private:
-    bool cylinder() const;
-
     const Parameters::HertzComparison hertz;
     double                            contact_modulus; ///< E*
     Tensor<1, dim>                    normal, center;

@@ -109,17 +109,38 @@ namespace FoslsContact
                           const LevelVector &  residual);
     /**
      * The Newton direction @p d at @p x (the rounds of PCG); returns the
-     * number of linear cycles applied.
+     * number of linear cycles applied. With 3D traction pairs on their
+     * circles that the direction turns, the last round holds them at the
+     * points of their circles it turns them to, and tangential_direction
+     * keeps the direction before that round (has_tangential_direction).
      */
     unsigned int direction(const ConstrainedQP &qp,
                            const LevelVector &  x,
                            const LevelVector &  residual,
                            LevelVector &        d);
-    /** x moves along @p d by the better of the two feasible steps. */
+    /**
+     * x moves by the best of the feasible steps along @p d (best_step()),
+     * and along tangential_direction where there is one.
+     */
     void line_search(const ConstrainedQP &qp,
                      LevelVector &        x,
                      const LevelVector &  d,
                      const LevelVector &  residual) const;
+    /**
+     * The better of the two feasible steps along @p d from @p x: its
+     * decrease of J, and move()'s arguments for it (@p e, @p t,
+     * @p exact_bounds). @p chords: whether the pairs on their circles
+     * move along chords of them (held at a point of the circle by the last
+     * round of direction()) rather than along their tangents. Collective.
+     */
+    double best_step(const ConstrainedQP &qp,
+                     const LevelVector &  x,
+                     const LevelVector &  d,
+                     const LevelVector &  residual,
+                     const bool           chords,
+                     LevelVector &        e,
+                     double &             t,
+                     bool &               exact_bounds) const;
 
     /**
      * Where a free DoF @p i of the linear problem that the direction takes
@@ -140,6 +161,7 @@ namespace FoslsContact
     bool pair_stop(const ConstrainedQP &          qp,
                    const unsigned int             i,
                    const TangentialPair::Vector2 &y,
+                   const bool                     circles,
                    TangentialPair::Vector2 &      stop) const;
     /** minimizer_along() with the pairs of 3D friction. Collective. */
     double minimizer_along_pairs(const ConstrainedQP &qp,
@@ -208,6 +230,12 @@ namespace FoslsContact
     std::vector<PairDirection> pair_curvatures;
     /** The owned DoFs of traction pairs that move along their circle. */
     std::vector<bool> on_circle;
+    /**
+     * The direction before direction()'s last round held the pairs on
+     * their circles (valid where has_tangential_direction).
+     */
+    LevelVector tangential_direction;
+    bool        has_tangential_direction = false;
   };
 } // namespace FoslsContact
 

@@ -1,0 +1,47 @@
+#!/usr/bin/env python3
+# prm/cattaneo_mindlin_3d.prm, the scene of Cattaneo and Mindlin's problem
+# in 3D (a rigid sphere pressed into an incompressible half-space, then
+# pulled sideways), pressed only and without friction (its Coulomb load
+# path takes minutes: bench/friction.py runs it, doc/friction_results.md):
+#  - prm/meshes/make_cattaneo_mindlin_3d.py writes the shipped mesh;
+#  - the half-space's far field on the box's top and sides carries the
+#    pressure of Hertz's sphere: on 2 levels, where the contact radius
+#    (Hertz's a = 0.080) spans 2.5 vertex spacings (1/32), the normal force
+#    is the scene's P to 3% (measured: 2.6% low) and the pressure's
+#    relative L2 error on the contact boundary at most 0.25 (measured:
+#    0.23);
+#  - J never increases, every iterate feasible.
+# ctest: timeout=300 cost=10
+import filecmp
+import os
+import subprocess
+import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from fosls_runs import Runner, check, check_monotone_feasible, finish, rounded
+
+R = Runner(sys.argv)
+MESH = os.path.join(R.source, "prm", "meshes", "cattaneo_mindlin_3d.msh")
+generated = os.path.join(os.getcwd(), "cattaneo_mindlin_3d.msh")
+subprocess.run([sys.executable, os.path.join(R.source, "prm", "meshes",
+                                             "make_cattaneo_mindlin_3d.py"), generated],
+               check=True)
+check(filecmp.cmp(generated, MESH, shallow=False),
+      "prm/meshes/make_cattaneo_mindlin_3d.py writes prm/meshes/cattaneo_mindlin_3d.msh")
+
+P = 0.001365
+run = R.run("prm/cattaneo_mindlin_3d.prm",
+            ["Friction/Law=none", "Data/Load steps=", "Data/Constants=P=0.001365, Q=0, f=0.3, "
+             "R=2, mu=1"], "pressed")
+check(run.returncode == 0, "the pressed sphere runs")
+hertz = run["hertz"]
+force = run["contact_force"][2]
+error = hertz["pressure_error_boundary"]
+print("pressed: %d DoFs, normal force / P = %s, Hertz's a = %s, pressure error %s "
+      "(relative L2 on the contact boundary)" % (
+          run["dofs"], rounded(force / P, 4), rounded(hertz["a"], 3), rounded(error, 2)))
+check(abs(force / P - 1) <= 0.03, "the normal force is P (to 3%)")
+check(error <= 0.25, "the pressure error is at most 0.25")
+check_monotone_feasible(run, "pressed")
+finish()

@@ -332,7 +332,7 @@ namespace FoslsContact
     double      tolerance = 0;
     // (the last round, after no DoF passes its bound any more: the pairs
     // on their circles held where the direction turns them; see below)
-    bool circles = false;
+    bool circle_round        = false;
     has_tangential_direction = false;
     for (unsigned int round = 0; round < max_rounds + 1; ++round)
       {
@@ -379,9 +379,10 @@ namespace FoslsContact
             // at most krylov_steps steps: the last iterate is the direction
           }
         d += increment;
-        if (circles)
+        if (circle_round)
           break;
-        const auto stop_violations = [&](const bool circles) {
+        // (with_circles: the pairs on their circles stop too)
+        const auto stop_violations = [&](const bool with_circles) {
           bool violated = false;
           for (unsigned int i = 0; round < max_rounds && i < n_owned; ++i)
             if (linear_role[i] == DoFRole::free && qp.has_friction() &&
@@ -394,7 +395,7 @@ namespace FoslsContact
                               i,
                               {x.local_element(i) + d.local_element(i),
                                x.local_element(j) + d.local_element(j)},
-                              circles,
+                              with_circles,
                               stop))
                   for (const auto &[k, value] :
                        {std::make_pair(i, stop[0]), std::make_pair(j, stop[1])})
@@ -405,7 +406,7 @@ namespace FoslsContact
                       violated                   = true;
                     }
               }
-            else if (linear_role[i] == DoFRole::free && !circles)
+            else if (linear_role[i] == DoFRole::free && !with_circles)
               {
                 const double stop = stop_of(qp, i, x.local_element(i) + d.local_element(i));
                 if (!std::isnan(stop))
@@ -441,7 +442,7 @@ namespace FoslsContact
             if (!stop_violations(true))
               break;
             has_tangential_direction = true;
-            circles                  = true;
+            circle_round             = true;
           }
         // the owners' decisions to the ghost copies (the smoother's roles)
         exchange_ghosts(qp.partitioner, linear_role);

@@ -191,10 +191,13 @@ namespace FoslsContact
                                        const LevelVector &         r,
                                        const LevelVector &         v,
                                        LevelVector &               residual,
-                                       LevelVector &               r_coarse) const
+                                       LevelVector &               r_coarse,
+                                       const PairTerms *           pair_terms) const
   {
     vmult(A, residual, v, false); // (v's ghosts: valid in a visit)
     residual.sadd(-1., 1., r);
+    if (pair_terms != nullptr)
+      pair_terms->subtract_product(v, residual);
     product[l].Tvmult(r_coarse, residual);
   }
 

@@ -170,8 +170,10 @@ namespace FoslsContact
     work.truncation.truncate(ub, v);
     const bool rebuilt = update_operator(l, A, role, linear);
 
-    if (visit == 0 || rebuilt)
-      operators.restrict_defect(l, A, r, v, work.residual, work.r_coarse);
+    // (with pair terms the shortcut below would need P~^T K P~ c too)
+    const PairTerms *pair_terms = linear && l == finest ? linear_pair_terms : nullptr;
+    if (visit == 0 || rebuilt || pair_terms != nullptr)
+      operators.restrict_defect(l, A, r, v, work.residual, work.r_coarse, pair_terms);
     else
       {
         // The truncation is the one of the last visit (always so in the

@@ -184,6 +184,33 @@ namespace FoslsContact
             default:
               break;
           }
+    if (friction && qp.friction.has_pairs())
+      set_pair_terms(qp);
+  }
+
+
+  template <int dim>
+  void
+  NewtonStep<dim>::set_pair_terms(const ConstrainedQP &qp)
+  {
+    // K of the owned pairs, then to the ghost copies (a patch of this
+    // process may hold a pair another process owns)
+    LevelVector diagonal = qp.new_vector(), coupling = qp.new_vector();
+    for (const auto &[i, j, u, kappa] : pair_curvatures)
+      {
+        diagonal.local_element(i) += kappa * u[0] * u[0];
+        diagonal.local_element(j) += kappa * u[1] * u[1];
+        coupling.local_element(i) += kappa * u[0] * u[1];
+        coupling.local_element(j) += kappa * u[0] * u[1];
+      }
+    const auto local_copy = [](const LevelVector &v, std::vector<double> &copy) {
+      update_ghosts(v);
+      const LocalElements local(v);
+      copy.assign(local.begin(), local.begin() + local.size());
+    };
+    local_copy(diagonal, pair_terms.diagonal);
+    local_copy(coupling, pair_terms.coupling);
+    pair_terms.partner = qp.friction.partner;
   }
 
 
@@ -211,8 +238,8 @@ namespace FoslsContact
     // search cuts the steps short (doc/method.md section 7.7). A curvature
     // above curvature_limit times the pair's diagonal of A holds its
     // direction instead: a stiff local mode, which the smoother's pair
-    // blocks take, and which would cost the preconditioned CG (the cycle
-    // does not see the curvature) many steps.
+    // blocks take, and which costs the preconditioned CG steps (the
+    // cycle sees the curvature on the finest level only, PairTerms).
     constexpr double   curvature_limit = 10;
     const unsigned int j               = qp.friction.partner_of(i);
     if (j < i)
@@ -321,8 +348,11 @@ namespace FoslsContact
       cycle.run(finest, A, r, infinite, linear_role, v, true);
       ++n_cycles;
     };
-    CyclePreconditioner<decltype(apply_cycle)> preconditioner{
-      apply_cycle, pair_directions, qp.has_friction() && qp.friction.has_pairs(), qp.new_vector()};
+    const bool pairs = qp.has_friction() && qp.friction.has_pairs();
+    CyclePreconditioner<decltype(apply_cycle)> preconditioner{apply_cycle,
+                                                              pair_directions,
+                                                              pairs,
+                                                              qp.new_vector()};
     std::vector<types::global_dof_index>       fixed;
     for (unsigned int i = 0; i < n_owned; ++i)
       if (linear_role[i] == DoFRole::fixed)
@@ -334,13 +364,17 @@ namespace FoslsContact
     // on their circles held where the direction turns them; see below)
     bool circle_round        = false;
     has_tangential_direction = false;
+    has_first_direction      = false;
     for (unsigned int round = 0; round < max_rounds + 1; ++round)
       {
-        if (linear_role != linear_role_used)
+        if (linear_role != linear_role_used || !(pair_terms == pair_terms_used))
           {
             const ScopedTime timing(counters.operators);
-            pre_smoother.set_linear_roles(finest, linear_role);
+            pre_smoother.set_linear_roles(finest,
+                                          linear_role,
+                                          pair_terms.partner.empty() ? nullptr : &pair_terms);
             linear_role_used = linear_role;
+            pair_terms_used  = pair_terms;
           }
         rhs = residual;
         if (round > 0) // the increment is zero until a DoF was moved to its bound
@@ -356,6 +390,7 @@ namespace FoslsContact
         project_pairs(pair_directions, rhs);
         if (round == 0)
           tolerance = cg_reduction * rhs.l2_norm();
+        cycle.set_linear_pair_terms(pair_terms.empty() ? nullptr : &pair_terms);
         SolverControl         control(parameters.krylov_steps, tolerance, false, false);
         SolverCG<LevelVector> cg(control);
         // round 0 starts from zero; a later round from the last round's
@@ -378,7 +413,14 @@ namespace FoslsContact
           {
             // at most krylov_steps steps: the last iterate is the direction
           }
+        cycle.set_linear_pair_terms(nullptr);
         d += increment;
+        // (3D friction: the first round's direction is a candidate of the
+        // line search; see line_search())
+        if (pairs && round == 0)
+          first_direction = d;
+        else if (pairs)
+          has_first_direction = true;
         if (circle_round)
           break;
         // (with_circles: the pairs on their circles stop too)
@@ -721,25 +763,38 @@ namespace FoslsContact
                                const LevelVector &  d,
                                const LevelVector &  residual) const
   {
-    LevelVector  e            = qp.new_vector();
-    double       t            = 0;
-    bool         exact_bounds = false;
-    const double decrease =
-      best_step(qp, x, d, residual, has_tangential_direction, e, t, exact_bounds);
+    // The best step of the candidate directions (the same on every
+    // process: the decreases are sums over all of them). With 3D friction
+    // the first round's direction d_0 is one: the later rounds prescribe
+    // the moves of the DoFs they fix (to a bound, a circle, a kink), and
+    // the rest of the direction follows them, which need not descend: in
+    // the 3D Cattaneo-Mindlin pull J rose at first order along both d and
+    // the direction before the circle round, 0 was their best step, and
+    // the iteration crawled on the smoother's steps at 0.99 per iteration.
+    // d_0, the Newton step of the model without those moves, descends
+    // wherever its CG descends on the model; its projected step then took
+    // that Tresca problem to convergence in 9 iterations.
+    LevelVector e = qp.new_vector(), e_candidate = qp.new_vector();
+    double      t = 0, decrease = 0;
+    bool        exact_bounds = false;
+    const auto  candidate    = [&](const LevelVector &direction, const bool chords) {
+      double       t_c     = 0;
+      bool         exact_c = false;
+      const double decrease_c =
+        best_step(qp, x, direction, residual, chords, e_candidate, t_c, exact_c);
+      if (decrease_c > decrease)
+        {
+          decrease = decrease_c;
+          t        = t_c;
+          exact_bounds = exact_c;
+          e.swap(e_candidate);
+        }
+    };
+    candidate(d, has_tangential_direction);
     if (has_tangential_direction)
-      {
-        LevelVector  e_t     = qp.new_vector();
-        double       t_t     = 0;
-        bool         exact_t = false;
-        const double decrease_t =
-          best_step(qp, x, tangential_direction, residual, false, e_t, t_t, exact_t);
-        if (decrease_t > decrease)
-          {
-            if (decrease_t > 0)
-              move(qp, x, e_t, t_t, exact_t);
-            return;
-          }
-      }
+      candidate(tangential_direction, false);
+    if (has_first_direction)
+      candidate(first_direction, false);
     if (decrease > 0)
       move(qp, x, e, t, exact_bounds);
   }

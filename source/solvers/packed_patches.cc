@@ -368,7 +368,8 @@ namespace FoslsContact
 
 
   void
-  PackedPatches::set_linear_roles(const std::vector<DoFRole> &linear_role)
+  PackedPatches::set_linear_roles(const std::vector<DoFRole> &linear_role,
+                                  const PairTerms *           pair_terms)
   {
     linear_patch.resize(qps.size());
     for (unsigned int k = 0; k < box_qp.size(); ++k)
@@ -387,6 +388,25 @@ namespace FoslsContact
           for (unsigned int a = 0; a < m; ++a)
             for (unsigned int b = 0; b < m; ++b)
               M(a, b) = qp.matrix_entry(patch.moving[a], patch.moving[b]);
+          // a pair's curvature, where both of its DoFs move in this patch
+          patch.pair_entries.clear();
+          for (unsigned int a = 0; pair_terms != nullptr && a < m; ++a)
+            {
+              const auto i = dofs[patch.moving[a]];
+              if (pair_terms->diagonal[i] == 0 && pair_terms->coupling[i] == 0)
+                continue;
+              for (unsigned int b = 0; b < m; ++b)
+                if (dofs[patch.moving[b]] == pair_terms->partner[i])
+                  {
+                    M(a, a) += pair_terms->diagonal[i];
+                    M(a, b) += pair_terms->coupling[i];
+                    patch.pair_entries.push_back({patch.moving[a],
+                                                  static_cast<unsigned int>(i),
+                                                  pair_terms->partner[i],
+                                                  pair_terms->diagonal[i],
+                                                  pair_terms->coupling[i]});
+                  }
+            }
           if (m > 0)
             invert_spd(M);
           patch.inverse.assign(M.begin(), M.end());
@@ -407,7 +427,8 @@ namespace FoslsContact
       bytes += qp.memory_consumption();
     for (const LinearPatch &patch : linear_patch)
       bytes += sizeof(LinearPatch) + memory_consumption(patch.moving) +
-               memory_consumption(patch.inverse);
+               memory_consumption(patch.inverse) +
+               patch.pair_entries.capacity() * sizeof(LinearPatch::PairEntry);
     return bytes;
   }
 } // namespace FoslsContact

@@ -115,6 +115,8 @@ namespace FoslsContact
       const auto &       patch    = level.linear_patch[level.box_qp[k]];
       const unsigned int n_moving = patch.moving.size();
       double             gc = 0, scale = 0;
+      for (const auto &[a, i, j, k_ii, k_ij] : patch.pair_entries)
+        w.g[a] -= k_ii * v[i] + k_ij * v[j];
       for (unsigned int a = 0; a < n_moving; ++a)
         {
           double ca = 0;
@@ -504,9 +506,11 @@ namespace FoslsContact
 
 
   void
-  PatchSmoother::set_linear_roles(const unsigned int l, const std::vector<DoFRole> &linear_role)
+  PatchSmoother::set_linear_roles(const unsigned int          l,
+                                  const std::vector<DoFRole> &linear_role,
+                                  const PairTerms *           pair_terms)
   {
-    shared->levels[l].set_linear_roles(linear_role);
+    shared->levels[l].set_linear_roles(linear_role, pair_terms);
   }
 
 

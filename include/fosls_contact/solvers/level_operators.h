@@ -8,6 +8,7 @@
 #include <fosls_contact/solvers/flux_rerouting.h>
 #include <fosls_contact/solvers/galerkin_product.h>
 #include <fosls_contact/solvers/multilevel_hierarchy.h>
+#include <fosls_contact/solvers/pair_terms.h>
 
 #include <utility>
 #include <vector>
@@ -108,14 +109,17 @@ namespace FoslsContact
     /**
      * The coarse defect of @p v on level @p l, @p r_coarse = P~^T (r - A v)
      * for the last P~ of level l, with the fine residual left in
-     * @p residual. The ghost values of @p v must be valid. Collective.
+     * @p residual; with @p pair_terms, of A + K (the Newton step's linear
+     * cycle with 3D friction, PairTerms). The ghost values of @p v must be
+     * valid. Collective.
      */
     void restrict_defect(const unsigned int          l,
                          const SparseMatrix<double> &A,
                          const LevelVector &         r,
                          const LevelVector &         v,
                          LevelVector &               residual,
-                         LevelVector &               r_coarse) const;
+                         LevelVector &               r_coarse,
+                         const PairTerms *           pair_terms = nullptr) const;
     /**
      * The difference of @p r_coarse to P~^T (r - A v) recomputed, relative
      * to a bound of the terms' size, |P~^T| (|A| |v| + |r|) (max norms),

@@ -81,6 +81,13 @@ namespace FoslsContact
              const bool                  linear = false,
              std::optional<Parameters::Solver::Cycle> type = {});
 
+    /**
+     * The pair terms K that the linear cycle adds to A on the finest level
+     * (nullptr: none), in its smoother (PatchSmoother::set_linear_roles())
+     * and in the defect it restricts from there (PairTerms).
+     */
+    void set_linear_pair_terms(const PairTerms *terms) { linear_pair_terms = terms; }
+
     /** Set up the patch smoother of level @p l for @p A with @p role. */
     void initialize_smoother(const unsigned int          l,
                              const SparseMatrix<double> &A,
@@ -188,6 +195,7 @@ namespace FoslsContact
     MultigridCounters &             counters;
     const unsigned int              finest;
     unsigned int                    linear_coarsest_level = 0;
+    const PairTerms *               linear_pair_terms     = nullptr;
     std::vector<Scratch>            scratch;
   };
 } // namespace FoslsContact

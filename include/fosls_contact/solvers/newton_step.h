@@ -43,7 +43,9 @@ namespace FoslsContact
    *     its residual down from many orders of magnitude above the
    *     tolerance and can run out of its Krylov steps (doc/performance.md,
    *     "Figures behind the code");
-   *  3. a line search that takes the better of two feasible steps;
+   *  3. a line search that takes the best of the feasible steps along
+   *     the direction (with 3D friction also along those of the first
+   *     round and of the round before the last);
    *  4. projected post-smoothing.
    * J never increases.
    *
@@ -71,7 +73,11 @@ namespace FoslsContact
     unsigned int apply(const ConstrainedQP &qp, LevelVector &x);
 
     /** The finest level's operator changed: its linear roles are gone. */
-    void new_fine_operator() { linear_role_used.clear(); }
+    void new_fine_operator()
+    {
+      linear_role_used.clear();
+      pair_terms_used = PairTerms();
+    }
 
     /**
      * The most rounds of the Newton direction. Each round fixes at least
@@ -107,6 +113,8 @@ namespace FoslsContact
     void set_linear_roles(const ConstrainedQP &qp,
                           const LevelVector &  x,
                           const LevelVector &  residual);
+    /** pair_terms of pair_curvatures. Collective. */
+    void set_pair_terms(const ConstrainedQP &qp);
     /**
      * The Newton direction @p d at @p x (the rounds of PCG); returns the
      * number of linear cycles applied. With 3D traction pairs on their
@@ -120,7 +128,8 @@ namespace FoslsContact
                            LevelVector &        d);
     /**
      * x moves by the best of the feasible steps along @p d (best_step()),
-     * and along tangential_direction where there is one.
+     * and along tangential_direction and first_direction where there are
+     * such.
      */
     void line_search(const ConstrainedQP &qp,
                      LevelVector &        x,
@@ -228,6 +237,11 @@ namespace FoslsContact
     std::vector<PairDirection> pair_directions;
     /** The curvatures kappa u u^T the linear problem adds at the pairs. */
     std::vector<PairDirection> pair_curvatures;
+    /**
+     * The curvatures of the pairs (pair_curvatures) as the linear cycle
+     * sees them (PairTerms), and those its smoother was last set up with.
+     */
+    PairTerms pair_terms, pair_terms_used;
     /** The owned DoFs of traction pairs that move along their circle. */
     std::vector<bool> on_circle;
     /**
@@ -236,6 +250,13 @@ namespace FoslsContact
      */
     LevelVector tangential_direction;
     bool        has_tangential_direction = false;
+    /**
+     * With 3D friction, the direction of the first round (valid where
+     * has_first_direction: a later round ran), a candidate of
+     * line_search().
+     */
+    LevelVector first_direction;
+    bool        has_first_direction = false;
   };
 } // namespace FoslsContact
 

@@ -7,6 +7,7 @@
 
 #include <fosls_contact/qp/dof_role.h>
 #include <fosls_contact/solvers/box_qp.h>
+#include <fosls_contact/solvers/pair_terms.h>
 
 #include <cstdint>
 #include <memory>
@@ -92,9 +93,11 @@ namespace FoslsContact
      * bounded DoF differ from the constrained ones, so only they get a
      * second inverse, of the patch matrix without the fixed DoFs
      * (linear_patch): O(contact patches) work and memory instead of a
-     * second set of patches for the whole level.
+     * second set of patches for the whole level. With @p pair_terms the
+     * patch matrices and defects of the linear problem include K.
      */
-    void set_linear_roles(const std::vector<DoFRole> &linear_role);
+    void set_linear_roles(const std::vector<DoFRole> &linear_role,
+                          const PairTerms *           pair_terms = nullptr);
 
     /** The bytes of the packed arrays, the patch problems and inverses. */
     std::size_t memory_consumption() const;
@@ -130,6 +133,16 @@ namespace FoslsContact
     {
       std::vector<unsigned int> moving;
       std::vector<double>       inverse;
+      /**
+       * The pair terms K (PairTerms) at the moving DoFs: g_a -= K_ii v_i +
+       * K_ij v_j for the DoF i at patch position a with partner j.
+       */
+      struct PairEntry
+      {
+        unsigned int a, i, j;
+        double       k_ii, k_ij;
+      };
+      std::vector<PairEntry> pair_entries;
     };
     std::vector<LinearPatch> linear_patch;
     /**

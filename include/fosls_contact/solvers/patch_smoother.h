@@ -98,9 +98,12 @@ namespace FoslsContact
 
     /**
      * The roles of the linear problem of a Newton step on level @p l
+     * with the pair terms K it adds to A, if any
      * (PackedPatches::set_linear_roles()).
      */
-    void set_linear_roles(const unsigned int l, const std::vector<DoFRole> &linear_role);
+    void set_linear_roles(const unsigned int          l,
+                          const std::vector<DoFRole> &linear_role,
+                          const PairTerms *           pair_terms = nullptr);
     /**
      * Relax level @p l with the linear roles (true) or with the obstacles
      * of set_obstacles() (false).

@@ -55,6 +55,7 @@ namespace FoslsContact
     for (unsigned int p = 1; p < counts.size(); ++p)
       displacements[p] = displacements[p - 1] + counts[p - 1];
     const auto n = partitioner.size();
+    held_factor.reset();
     if (counts.size() == 1)
       {
         // one process: the level's matrix and roles are global already
@@ -160,17 +161,87 @@ namespace FoslsContact
   void
   CoarseSolver::solve_sparse()
   {
+    const unsigned int n = v_all.size();
+    // (the first visit of this operator tries the set v is at: a visit of
+    // the linear cycle has none, and then this is its solution)
+    if (!held_factor)
+      hold_where_at_bound();
+    if (solve_held())
+      return;
+
     // on this process alone
-    const auto  self = serial_partitioner(v_all.size());
+    const auto  self = serial_partitioner(n);
     LevelVector r_self(self), ub_self(self), v_self(self);
-    for (unsigned int i = 0; i < v_all.size(); ++i)
+    for (unsigned int i = 0; i < n; ++i)
       {
         r_self.local_element(i)  = r_all[i];
         ub_self.local_element(i) = ub_all[i];
         v_self.local_element(i)  = v_all[i];
       }
     ActiveSetDirect::solve_quietly(*global, r_self, role_global, ub_self, v_self, max_sparse_steps);
-    for (unsigned int i = 0; i < v_all.size(); ++i)
+    for (unsigned int i = 0; i < n; ++i)
       v_all[i] = v_self.local_element(i);
+    // the set it ends with, for the next visits (the active set method
+    // sets a held DoF to its bound exactly)
+    hold_where_at_bound();
+  }
+
+
+  void
+  CoarseSolver::hold_where_at_bound()
+  {
+    held.assign(v_all.size(), false);
+    for (unsigned int i = 0; i < v_all.size(); ++i)
+      held[i] = role_global[i] == DoFRole::fixed || global->diag_element(i) <= 0. ||
+                (role_global[i] == DoFRole::bounded && v_all[i] >= ub_all[i]);
+    // as the active set method's step (solve_reduced() there), so that
+    // the same set gives the same bits
+    SparseMatrix<double> M(global->get_sparsity_pattern());
+    M.copy_from(*global);
+    for (unsigned int i = 0; i < held.size(); ++i)
+      for (auto e = M.begin(i); e != M.end(i); ++e)
+        if (held[i] || held[e->column()])
+          e->value() = (i == e->column()) ? 1. : 0.;
+    held_factor = std::make_unique<SparseDirectSolver>();
+    held_factor->initialize(M, serial_partitioner(held.size()));
+    ++n_kept_factorizations;
+  }
+
+
+  bool
+  CoarseSolver::solve_held()
+  {
+    const unsigned int n    = v_all.size();
+    const auto         self = serial_partitioner(n);
+    LevelVector        x(self), xe(self), rhs(self), Ax(self);
+    // (a bounded DoF with a zero diagonal, switched off by the truncation,
+    // is held at v: its bound may be infinite)
+    const auto at_bound = [&](const unsigned int i) {
+      return held[i] && role_global[i] == DoFRole::bounded && global->diag_element(i) > 0.;
+    };
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double value = at_bound(i) ? ub_all[i] : v_all[i];
+        x.local_element(i)   = value;
+        xe.local_element(i)  = held[i] ? value : 0.;
+        rhs.local_element(i) = r_all[i];
+      }
+    vmult(*global, Ax, xe);
+    rhs -= Ax;
+    for (unsigned int i = 0; i < n; ++i)
+      if (held[i])
+        rhs.local_element(i) = x.local_element(i);
+    held_factor->vmult(x, rhs);
+    // the active set method's test of its set, at x: a held bound stays
+    // held where its multiplier b - A x is > 0, a free one where x <= ub
+    // (written so that a NaN fails it)
+    vmult(*global, Ax, x);
+    for (unsigned int i = 0; i < n; ++i)
+      if (role_global[i] == DoFRole::bounded && global->diag_element(i) > 0. &&
+          !(at_bound(i) ? r_all[i] - Ax.local_element(i) > 0. : x.local_element(i) <= ub_all[i]))
+        return false;
+    for (unsigned int i = 0; i < n; ++i)
+      v_all[i] = x.local_element(i);
+    return true;
   }
 } // namespace FoslsContact

@@ -16,8 +16,10 @@ contact), level by level:
   --cm-max-level, against Cattaneo and Mindlin's solution: the program's
   own comparison of each step (the screen's "Hertz" and "Cattaneo-Mindlin"
   lines); prm/cattaneo_mindlin_3d.prm, the same with a sphere in 3D,
-  levels 2 to --cm3d-max-level (default 2; a run on 2 levels takes a few
-  minutes, on 3 levels about eight times the DoFs), the multigrid alone.
+  levels 2 to --cm3d-max-level (default 2; on 3 levels about eight times
+  the DoFs), the multigrid alone, and prm/cattaneo_mindlin_3d_fine.prm (the
+  same on a mesh graded to 1/64 at the contact point, four times as fine
+  there), levels 2 to --cm3d-fine-max-level (default 2; 0 leaves it out).
 
 For each run: the DoFs, the Tresca problems (one per step for Tresca, the
 fixed point's for Coulomb), the Newton steps per Tresca problem (largest
@@ -33,7 +35,8 @@ bench/results/friction/).
     friction.py [--square-max-level L] [--block-max-level L] [--cm-max-level L]
                 [--block3d-max-level L]
                 [--reference-max-level L] [--block-reference-max-level L]
-                [--cm-reference-max-level L] [--cm3d-max-level L] [--bin PATH]
+                [--cm-reference-max-level L] [--cm3d-max-level L]
+                [--cm3d-fine-max-level L] [--bin PATH]
 """
 import argparse
 import json
@@ -144,8 +147,9 @@ HERTZ = re.compile(r"pressure error \S+ \(relative l2 at the contact vertices\),
                    r"\(relative L2 on the contact boundary\)")
 CATTANEO_MINDLIN = re.compile(
     r"Cattaneo-Mindlin \(f = \S+, Q = \S+, Q/\(f P\) = (\S+)\): stick (?:zone \|x\||disc r) "
-    r"< c = (\S+) along Q\n\s+computed: stick zone from (\S+) to (\S+) \((\S+) and (\S+) vertex spacings "
-    r"from -c and c\), tangential traction error (\S+) of \|q\|, (\S+) of \|f p\|")
+    r"< c = (\S+) along Q\n\s+computed: (?:stick zone from (\S+) to (\S+) \((\S+) and (\S+) vertex "
+    r"spacings from -c and c\)|no vertex sticks), tangential traction error (\S+) of \|q\|, "
+    r"(\S+) of \|f p\|")
 
 
 CM_2D = {"scene": "cattaneo_mindlin.prm", "tag": "cattaneo_mindlin", "spacing": 0.5,
@@ -158,6 +162,10 @@ CM_3D = {"scene": "cattaneo_mindlin_3d.prm", "tag": "cattaneo_mindlin_3d", "spac
                   "Pressed with P = 0.001365 (Hertz's a = 0.080), then pulled to Q = 0.5 f P and "
                   "0.8 f P; c = a (1 - Q/(f P))^(1/3), the stick disc's ends measured on the "
                   "contact vertices along Q through the contact point. "}
+CM_3D_FINE = dict(CM_3D, scene="cattaneo_mindlin_3d_fine.prm", tag="cattaneo_mindlin_3d_fine",
+                  spacing=0.015625,
+                  title="## `prm/cattaneo_mindlin_3d_fine.prm`: the same on a mesh graded to "
+                        "1/64 at the contact point\n\n" + CM_3D["title"].split("\n\n", 1)[1])
 
 
 def cattaneo_mindlin_section(binary, levels, reference_levels, case=CM_2D):
@@ -184,8 +192,10 @@ def cattaneo_mindlin_section(binary, levels, reference_levels, case=CM_2D):
             head = "| %d | %d | %.5f | %.1f | %d | %.4f" % (
                 level, r["summary"]["dofs"], spacing, r["wall"], max(r["steps"]), pressure) \
                 if k == 0 else "| | | | | |"
-            rows.append("%s | %s | %s | %s to %s | %s, %s | %s | %s |" % (
-                head, ratio, c, lo, hi, e_lo, e_hi, of_q, difference if k == 0 else ""))
+            zone, ends = ("%s to %s" % (lo, hi), "%s, %s" % (e_lo, e_hi)) if lo is not None \
+                else ("no vertex sticks", "")
+            rows.append("%s | %s | %s | %s | %s | %s | %s |" % (
+                head, ratio, c, zone, ends, of_q, difference if k == 0 else ""))
     text = (case["title"] + "The pressure error is the largest of the three steps (relative L2 on the contact "
             "boundary); the stick zone's ends lie midway between the outermost stick vertex and "
             "the next one; the traction error is the relative L2 error of the tangential "
@@ -204,6 +214,7 @@ def main():
     ap.add_argument("--cm-max-level", type=int, default=9)
     ap.add_argument("--cm-reference-max-level", type=int, default=6)
     ap.add_argument("--cm3d-max-level", type=int, default=2)
+    ap.add_argument("--cm3d-fine-max-level", type=int, default=2)
     ap.add_argument("--bin", default=BIN)
     args = ap.parse_args()
     os.makedirs(RES, exist_ok=True)
@@ -232,6 +243,9 @@ def main():
     if args.cm3d_max_level >= 2:
         parts.append(cattaneo_mindlin_section(args.bin, range(2, args.cm3d_max_level + 1), 0,
                                               CM_3D))
+    if args.cm3d_fine_max_level >= 2:
+        parts.append(cattaneo_mindlin_section(args.bin, range(2, args.cm3d_fine_max_level + 1),
+                                              0, CM_3D_FINE))
     with open(DOC, "w") as f:
         f.write("\n".join(parts))
     print("wrote", DOC)

@@ -1,35 +1,52 @@
 #!/usr/bin/env python3
 """Write the coarse mesh of prm/cattaneo_mindlin_3d.prm: the box
-[-0.5, 0.5] x [-0.5, 0.5] x [0, 0.5] of 8 x 8 x 4 hexahedra, graded toward
-the contact point at the origin (cell sizes 1/16, 1/16, 1/8, 1/4 from the
-center out, in each direction), in Gmsh's format 2.2. Uniform refinement
-keeps the grading: the contact zone (radius 0.08) is meshed as finely as a
-uniform box with 8 times the cells in each direction. Boundary ids
-(physical tags): 1 the contact face z = 0, 2 the top z = 0.5, 3 the sides.
+[-0.5, 0.5] x [-0.5, 0.5] x [0, 0.5] of hexahedra graded toward the contact
+point at the origin, in Gmsh's format 2.2. The cells double in size from
+the center out, in each direction: 1/16, 1/16, 1/8, 1/4 (8 x 8 x 4 cells),
+or with --finest 64 (prm/cattaneo_mindlin_3d_fine.prm) 1/64, 1/64, 1/32,
+1/16, 1/8, 1/4 (12 x 12 x 6 cells). Uniform refinement keeps the grading:
+the contact zone (radius 0.08) is meshed as finely as a uniform box with
+8 (or 32) times the cells in each direction, while the far cells are up to
+4 (or 16) times as long as they are wide. Boundary ids (physical tags): 1
+the contact face z = 0, 2 the top z = 0.5, 3 the sides.
 
-    make_cattaneo_mindlin_3d.py [OUTPUT]   (default: cattaneo_mindlin_3d.msh
-                                            beside this script)
+    make_cattaneo_mindlin_3d.py [--finest N] [OUTPUT]
+        N: 1/N is the width of the cells at the contact point, a power of
+           2 from 4 (default 16); OUTPUT: default cattaneo_mindlin_3d.msh
+           (N = 16) or cattaneo_mindlin_3d_fine.msh (N = 64) beside this
+           script
 
-tests/solver/cattaneo_mindlin_3d checks that it writes the shipped file.
+tests/solver/cattaneo_mindlin_3d checks that it writes the shipped files.
 """
+import argparse
+import math
 import os
-import sys
 
-HALF = [0.0, 0.0625, 0.125, 0.25, 0.5]  # node coordinates from the center out
-XS = [-x for x in reversed(HALF[1:])] + HALF
-ZS = HALF
 CONTACT, TOP, SIDES = 1, 2, 3
 
 
 def main():
-    path = sys.argv[1] if len(sys.argv) > 1 else \
-        os.path.join(os.path.dirname(os.path.abspath(__file__)), "cattaneo_mindlin_3d.msh")
-    n = len(XS)
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--finest", type=int, default=16)
+    parser.add_argument("output", nargs="?")
+    args = parser.parse_args()
+    levels = round(math.log2(args.finest)) if args.finest > 0 else 0
+    if args.finest < 4 or 2 ** levels != args.finest:
+        parser.error("--finest must be a power of 2 of at least 4, not %d" % args.finest)
+    # node coordinates from the center out: 0, 1/N, 2/N, 4/N, ..., 1/2
+    half = [0.0] + [2.0 ** -k for k in range(levels, 0, -1)]
+    xs = [-x for x in reversed(half[1:])] + half
+    zs = half
+    name = "cattaneo_mindlin_3d.msh" if args.finest == 16 else \
+        "cattaneo_mindlin_3d_fine.msh" if args.finest == 64 else \
+        "cattaneo_mindlin_3d_%d.msh" % args.finest
+    path = args.output or os.path.join(os.path.dirname(os.path.abspath(__file__)), name)
+    n = len(xs)
 
     def node(i, j, k):
         return (k * n + j) * n + i + 1
 
-    nodes = [(x, y, z) for z in ZS for y in XS for x in XS]
+    nodes = [(x, y, z) for z in zs for y in xs for x in xs]
     elements = []  # (type, physical tag, vertices)
     m = n - 1
     # boundary quadrilaterals (3), then the hexahedra (5: the bottom face
@@ -38,10 +55,10 @@ def main():
         for i in range(m):
             elements.append((3, CONTACT, [node(i, j, 0), node(i, j + 1, 0),
                                           node(i + 1, j + 1, 0), node(i + 1, j, 0)]))
-            top = len(ZS) - 1
+            top = len(zs) - 1
             elements.append((3, TOP, [node(i, j, top), node(i + 1, j, top),
                                       node(i + 1, j + 1, top), node(i, j + 1, top)]))
-    for k in range(len(ZS) - 1):
+    for k in range(len(zs) - 1):
         for t in range(m):
             elements.append((3, SIDES, [node(0, t, k), node(0, t + 1, k),
                                         node(0, t + 1, k + 1), node(0, t, k + 1)]))
@@ -51,7 +68,7 @@ def main():
                                         node(t + 1, 0, k + 1), node(t + 1, 0, k)]))
             elements.append((3, SIDES, [node(t, m, k), node(t + 1, m, k),
                                         node(t + 1, m, k + 1), node(t, m, k + 1)]))
-    for k in range(len(ZS) - 1):
+    for k in range(len(zs) - 1):
         for j in range(m):
             for i in range(m):
                 elements.append((5, 0, [node(i, j, k), node(i + 1, j, k),

@@ -372,7 +372,7 @@ namespace FoslsContact
             const ScopedTime timing(counters.operators);
             pre_smoother.set_linear_roles(finest,
                                           linear_role,
-                                          pair_terms.partner.empty() ? nullptr : &pair_terms);
+                                          pair_terms.empty() ? nullptr : &pair_terms);
             linear_role_used = linear_role;
             pair_terms_used  = pair_terms;
           }

@@ -3,7 +3,9 @@
 # in 3D (a rigid sphere pressed into an incompressible half-space, then
 # pulled sideways), pressed only and without friction (its Coulomb load
 # path takes minutes: bench/friction.py runs it, doc/friction_results.md):
-#  - prm/meshes/make_cattaneo_mindlin_3d.py writes the shipped mesh;
+#  - prm/meshes/make_cattaneo_mindlin_3d.py writes the shipped meshes (of
+#    prm/cattaneo_mindlin_3d.prm and, with --finest 64, of
+#    prm/cattaneo_mindlin_3d_fine.prm);
 #  - the half-space's far field on the box's top and sides carries the
 #    pressure of Hertz's sphere: on 2 levels, where the contact radius
 #    (Hertz's a = 0.080) spans 2.5 vertex spacings (1/32), the normal force
@@ -22,13 +24,15 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fosls_runs import Runner, check, check_monotone_feasible, finish, rounded
 
 R = Runner(sys.argv)
-MESH = os.path.join(R.source, "prm", "meshes", "cattaneo_mindlin_3d.msh")
-generated = os.path.join(os.getcwd(), "cattaneo_mindlin_3d.msh")
-subprocess.run([sys.executable, os.path.join(R.source, "prm", "meshes",
-                                             "make_cattaneo_mindlin_3d.py"), generated],
-               check=True)
-check(filecmp.cmp(generated, MESH, shallow=False),
-      "prm/meshes/make_cattaneo_mindlin_3d.py writes prm/meshes/cattaneo_mindlin_3d.msh")
+for name, options in [("cattaneo_mindlin_3d.msh", []),
+                      ("cattaneo_mindlin_3d_fine.msh", ["--finest", "64"])]:
+    generated = os.path.join(os.getcwd(), name)
+    subprocess.run([sys.executable, os.path.join(R.source, "prm", "meshes",
+                                                 "make_cattaneo_mindlin_3d.py")] + options +
+                   [generated], check=True)
+    check(filecmp.cmp(generated, os.path.join(R.source, "prm", "meshes", name), shallow=False),
+          "prm/meshes/make_cattaneo_mindlin_3d.py %swrites prm/meshes/%s" % (
+              " ".join(options) + " " if options else "", name))
 
 P = 0.001365
 run = R.run("prm/cattaneo_mindlin_3d.prm",

@@ -148,7 +148,7 @@ HERTZ = re.compile(r"pressure error \S+ \(relative l2 at the contact vertices\),
 CATTANEO_MINDLIN = re.compile(
     r"Cattaneo-Mindlin \(f = \S+, Q = \S+, Q/\(f P\) = (\S+)\): stick (?:zone \|x\||disc r) "
     r"< c = (\S+) along Q\n\s+computed: (?:stick zone from (\S+) to (\S+) \((\S+) and (\S+) vertex "
-    r"spacings from -c and c\)|no vertex sticks), tangential traction error (\S+) of \|q\|, "
+    r"spacings from -c and c\)|no vertex sticks), tangential traction error (?:(\S+) of \|q\|, )?"
     r"(\S+) of \|f p\|")
 
 

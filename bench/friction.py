@@ -207,7 +207,7 @@ def cattaneo_mindlin_section(binary, levels, reference_levels, case=CM_2D):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--square-max-level", type=int, default=8)
-    ap.add_argument("--block-max-level", type=int, default=7)
+    ap.add_argument("--block-max-level", type=int, default=8)
     ap.add_argument("--reference-max-level", type=int, default=6)
     ap.add_argument("--block-reference-max-level", type=int, default=5)
     ap.add_argument("--block3d-max-level", type=int, default=3)

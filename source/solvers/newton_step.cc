@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 #include <utility>
 
 namespace FoslsContact
@@ -423,41 +424,52 @@ namespace FoslsContact
           has_first_direction = true;
         if (circle_round)
           break;
-        // (with_circles: the pairs on their circles stop too)
+        // (with_circles: the pairs on their circles stop too, all of them)
         const auto stop_violations = [&](const bool with_circles) {
-          bool violated = false;
+          // the DoFs that pass their stop: (DoF, its stop, the fraction of
+          // d at which it reaches it)
+          std::vector<std::tuple<unsigned int, double, double>> stops;
           for (unsigned int i = 0; round < max_rounds && i < n_owned; ++i)
             if (linear_role[i] == DoFRole::free && qp.has_friction() &&
                 qp.friction.partner_of(i) != FrictionTerms::no_partner)
               {
-                const unsigned int      j = qp.friction.partner_of(i);
+                const unsigned int            j = qp.friction.partner_of(i);
+                const TangentialPair::Vector2 xp{x.local_element(i), x.local_element(j)},
+                  dp{d.local_element(i), d.local_element(j)};
                 TangentialPair::Vector2 stop;
-                if (j > i &&
-                    pair_stop(qp,
-                              i,
-                              {x.local_element(i) + d.local_element(i),
-                               x.local_element(j) + d.local_element(j)},
-                              with_circles,
-                              stop))
-                  for (const auto &[k, value] :
-                       {std::make_pair(i, stop[0]), std::make_pair(j, stop[1])})
-                    {
-                      linear_role[k] = DoFRole::fixed;
-                      fixed.push_back(k);
-                      increment.local_element(k) = value - x.local_element(k);
-                      violated                   = true;
-                    }
+                if (j > i && pair_stop(qp, i, {xp[0] + dp[0], xp[1] + dp[1]}, with_circles, stop))
+                  {
+                    const double t = pair_stop_fraction(qp, i, xp, dp);
+                    stops.emplace_back(i, stop[0], t);
+                    stops.emplace_back(j, stop[1], t);
+                  }
               }
             else if (linear_role[i] == DoFRole::free && !with_circles)
               {
                 const double stop = stop_of(qp, i, x.local_element(i) + d.local_element(i));
+                const double di   = d.local_element(i);
                 if (!std::isnan(stop))
-                  {
-                    linear_role[i] = DoFRole::fixed;
-                    fixed.push_back(i);
-                    increment.local_element(i) = stop - x.local_element(i);
-                    violated                   = true;
-                  }
+                  stops.emplace_back(i,
+                                     stop,
+                                     di != 0 ? std::clamp((stop - x.local_element(i)) / di, 0., 1.) : 0.);
+              }
+          // (a DoF at its stop up to round-off that d takes past it, t at
+          // most at_stop_fraction, is one that set_linear_roles() released
+          // or one a rounding short of its bound: not an overshoot)
+          double first = 1;
+          for (const auto &stop : stops)
+            if (std::get<2>(stop) > at_stop_fraction)
+              first = std::min(first, std::get<2>(stop));
+          first             = Utilities::MPI::min(first, qp.get_communicator());
+          const double last = with_circles || first >= overshoot_fraction ? 1. : early_fraction;
+          bool         violated = false;
+          for (const auto &[k, value, t] : stops)
+            if (t <= last)
+              {
+                linear_role[k] = DoFRole::fixed;
+                fixed.push_back(k);
+                increment.local_element(k) = value - x.local_element(k);
+                violated                   = true;
               }
           return Utilities::MPI::max(violated ? 1u : 0u, qp.get_communicator()) == 1;
         };
@@ -490,6 +502,31 @@ namespace FoslsContact
         exchange_ghosts(qp.partitioner, linear_role);
       }
     return n_cycles;
+  }
+
+
+  template <int dim>
+  double
+  NewtonStep<dim>::pair_stop_fraction(const ConstrainedQP &          qp,
+                                      const unsigned int             i,
+                                      const TangentialPair::Vector2 &x,
+                                      const TangentialPair::Vector2 &d) const
+  {
+    // a traction pair leaves its disc where |x + t d| = s; a slip pair
+    // passes its kink p nearest where d passes p
+    const double a = d[0] * d[0] + d[1] * d[1];
+    if (!(a > 0))
+      return 0.;
+    const unsigned int j = qp.friction.partner_of(i);
+    if (qp.role[i] == DoFRole::traction)
+      {
+        const double s = qp.friction.traction_bounds.local_element(i);
+        const double b = x[0] * d[0] + x[1] * d[1], c = x[0] * x[0] + x[1] * x[1] - s * s;
+        return std::clamp((-b + std::sqrt(std::max(0., b * b - a * c))) / a, 0., 1.);
+      }
+    const double p_0 = qp.friction.slip_references.local_element(i),
+                 p_1 = qp.friction.slip_references.local_element(j);
+    return std::clamp(((p_0 - x[0]) * d[0] + (p_1 - x[1]) * d[1]) / a, 0., 1.);
   }
 
 

@@ -20,7 +20,14 @@
 #    (to 1e-6);
 #  - J never increases, every iterate feasible (the last solve);
 #  - on 6 levels, 2 MPI processes give the comparison of 1 (summary.json
-#    "cattaneo_mindlin" and "hertz", to 1e-8).
+#    "cattaneo_mindlin" and "hertz", to 1e-8: the force, c and the stick
+#    zone's ends relative to themselves, the relative errors of the
+#    pressure and the traction as they are, that is relative to the norms
+#    of p and q as the forces are. The two runs take the same Tresca
+#    problems and Newton steps, and their answers differ by round-off
+#    carried through the Coulomb fixed point: the pressure error by 5e-10,
+#    the traction errors by 4e-9, which relative to the errors themselves,
+#    0.04 to 0.19, is 1e-8 to 2e-8).
 # ctest: mpirun timeout=400 cost=190
 import csv
 import math
@@ -114,8 +121,10 @@ runs = [R.run("prm/cattaneo_mindlin.prm", ["Geometry/Levels=6"], "cattaneo_mindl
               processes=n) for n in (1, 2)]
 check(all(r.ok() for r in runs) and all(
     abs(runs[0][key][k] - runs[1][key][k]) <= 1e-8 * abs(runs[0][key][k])
-    for key, keys in (("cattaneo_mindlin", ("c", "stick_from", "stick_to", "traction_error",
-                                            "traction_error_of_slip_limit")),
-                      ("hertz", ("force", "pressure_error_boundary")))
+    for key, keys in (("cattaneo_mindlin", ("c", "stick_from", "stick_to")), ("hertz", ("force",)))
+    for k in keys) and all(
+    abs(runs[0][key][k] - runs[1][key][k]) <= 1e-8
+    for key, keys in (("cattaneo_mindlin", ("traction_error", "traction_error_of_slip_limit")),
+                      ("hertz", ("pressure_error_boundary",)))
     for k in keys), "6 levels: 2 processes give the comparison of 1 (to 1e-8)")
 finish()

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace FoslsContact
 {
@@ -126,6 +127,17 @@ namespace FoslsContact
           result = {z[0] * scale, z[1] * scale};
         }
       return result;
+    }
+
+
+    double
+    disc_exit(const Vector2 &z, const Vector2 &d, const double s)
+    {
+      const double a = d[0] * d[0] + d[1] * d[1], b = z[0] * d[0] + z[1] * d[1];
+      const double c = z[0] * z[0] + z[1] * z[1] - s * s;
+      if (!(a > 0))
+        return std::numeric_limits<double>::infinity();
+      return std::max(0., (-b + std::sqrt(std::max(0., b * b - a * c))) / a);
     }
   } // namespace TangentialPair
 } // namespace FoslsContact

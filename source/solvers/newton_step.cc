@@ -519,11 +519,7 @@ namespace FoslsContact
       return 0.;
     const unsigned int j = qp.friction.partner_of(i);
     if (qp.role[i] == DoFRole::traction)
-      {
-        const double s = qp.friction.traction_bounds.local_element(i);
-        const double b = x[0] * d[0] + x[1] * d[1], c = x[0] * x[0] + x[1] * x[1] - s * s;
-        return std::clamp((-b + std::sqrt(std::max(0., b * b - a * c))) / a, 0., 1.);
-      }
+      return std::min(1., TangentialPair::disc_exit(x, d, qp.friction.traction_bounds.local_element(i)));
     const double p_0 = qp.friction.slip_references.local_element(i),
                  p_1 = qp.friction.slip_references.local_element(j);
     return std::clamp(((p_0 - x[0]) * d[0] + (p_1 - x[1]) * d[1]) / a, 0., 1.);
@@ -891,13 +887,10 @@ namespace FoslsContact
           if (qp.role[i] != DoFRole::traction || j == FrictionTerms::no_partner || j < i ||
               (on_circle[i] && !chords))
             continue;
-          const double d_1 = d.local_element(i), d_2 = d.local_element(j);
-          const double x_1 = x.local_element(i), x_2 = x.local_element(j);
-          const double a = d_1 * d_1 + d_2 * d_2, b = x_1 * d_1 + x_2 * d_2;
-          const double s = qp.friction.traction_bounds.local_element(i);
-          const double c = x_1 * x_1 + x_2 * x_2 - s * s;
-          if (a > 0)
-            t_feasible = std::min(t_feasible, std::max(0., (-b + std::sqrt(std::max(0., b * b - a * c))) / a));
+          t_feasible = std::min(t_feasible,
+                                TangentialPair::disc_exit({x.local_element(i), x.local_element(j)},
+                                                          {d.local_element(i), d.local_element(j)},
+                                                          qp.friction.traction_bounds.local_element(i)));
         }
     t_feasible               = Utilities::MPI::min(t_feasible, qp.get_communicator());
     const double t_unbounded = minimizer_along(qp, x, d, dAd, dr);

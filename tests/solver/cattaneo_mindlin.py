@@ -24,10 +24,11 @@
 #    zone's ends relative to themselves, the relative errors of the
 #    pressure and the traction as they are, that is relative to the norms
 #    of p and q as the forces are. The two runs take the same Tresca
-#    problems and Newton steps, and their answers differ by round-off
-#    carried through the Coulomb fixed point: the pressure error by 5e-10,
-#    the traction errors by 4e-9, which relative to the errors themselves,
-#    0.04 to 0.19, is 1e-8 to 2e-8).
+#    problems and Newton steps; their relative errors differ by 5e-10
+#    (pressure) and 4e-9 (traction), 1e-8 to 2e-8 of the errors
+#    themselves, and tighter tolerances of the solver and the fixed point
+#    (1e-10 and 1e-9) move these between 2e-10 and 1e-8 in no order: the
+#    round-off floor of the comparison, not a dependence on the processes).
 # ctest: mpirun timeout=400 cost=190
 import csv
 import math

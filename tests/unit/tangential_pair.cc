@@ -119,5 +119,11 @@ main()
   check(n_norm_local == n_problems, "the norm: no point of a ring around y lowers the objective");
   check(n_disc == n_problems, "the disc: |z| <= s, H z = r inside, r - H z = mu z / |z|, mu >= 0 on the circle");
   check(n_disc_local == n_problems, "the disc: no point of a ring around z in the disc lowers the objective");
+  // the line from (0.3, 0.4) along (1, 0) leaves the unit disc at
+  // t = sqrt(0.84) - 0.3; from its circle outwards at once; never along 0
+  const double t = disc_exit({0.3, 0.4}, {1., 0.}, 1.);
+  check(std::abs(t - (std::sqrt(0.84) - 0.3)) <= 1e-15 && norm({0.3 + t, 0.4}) <= 1 + 1e-15 &&
+          disc_exit({0.6, 0.8}, {1., 1.}, 1.) == 0 && std::isinf(disc_exit({0.3, 0.4}, {0., 0.}, 1.)),
+        "disc_exit: where the line leaves the disc");
   return exit_code();
 }

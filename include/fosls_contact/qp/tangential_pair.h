@@ -50,6 +50,12 @@ namespace FoslsContact
 
     /** @p z scaled onto the disc |z| <= s (unchanged inside it). */
     Vector2 project_to_disc(const Vector2 &z, const double s);
+
+    /**
+     * The t >= 0 at which z + t d leaves the disc |.| <= s (z in it;
+     * infinity for d = 0).
+     */
+    double disc_exit(const Vector2 &z, const Vector2 &d, const double s);
   } // namespace TangentialPair
 } // namespace FoslsContact
 

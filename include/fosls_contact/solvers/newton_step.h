@@ -35,10 +35,10 @@ namespace FoslsContact
    *     preconditioned by the linear truncated cycle (MonotoneCycle with
    *     linear = true), until the residual is cg_reduction times that of
    *     the first round (at most Krylov steps). A free DoF that the
-   *     direction would push past its bound (early along it, where it
-   *     overshoots: overshoot_fraction) is instead moved exactly to its bound and the linear problem solved
-   *     again without it, as in a primal-dual active set step (at most
-   *     max_rounds rounds). A round
+   *     direction would push past its bound (only the early ones where
+   *     it overshoots one: overshoot_fraction) is instead moved exactly to
+   *     its bound and the linear problem solved again without it, as in a
+   *     primal-dual active set step (at most max_rounds rounds). A round
    *     after the first starts CG from the last round's solution (zero at
    *     the DoFs now fixed): started from zero, a later round has to take
    *     its residual down from many orders of magnitude above the

@@ -62,6 +62,8 @@ namespace FoslsContact
     const auto &fine       = fine_mesh.level(fine_index);
     const auto &fine_tria  = fine_mesh.get_triangulation();
     const bool  same_mesh  = &coarse_mesh == &fine_mesh;
+    // (without friction the tangential rows are fixed on every level)
+    const unsigned int rows = scene.has_friction() ? dim : 1;
     auto        on_contact = [&](const auto &cell, const unsigned int f) {
       return cell->at_boundary(f) && scene.is_contact(cell->face(f)->boundary_id());
     };
@@ -75,12 +77,15 @@ namespace FoslsContact
           {
             if (fine_cell->has_children())
               {
-                const auto j = coarse.face_dofs.at(cell->face(f)->index())[0];
-                for (const auto i : inside_dofs(fine_cell, f, fine))
-                  rerouting.emplace_back(i, j);
+                const auto &dofs   = coarse.face_dofs.at(cell->face(f)->index());
+                const auto  inside = inside_dofs(fine_cell, f, fine);
+                for (unsigned int m = 0; m < rows; ++m)
+                  for (const auto i : inside)
+                    rerouting.emplace_back(i, dofs[m]);
               }
             if (coarse.owns(cell))
-              faces.push_back(face_relation(cell, fine_cell, f, coarse, fine));
+              faces.push_back(
+                face_relation(cell, fine_cell, f, coarse, fine, scene.has_friction()));
           }
     });
   }
@@ -93,7 +98,8 @@ namespace FoslsContact
                                            const FineIterator &  fine_cell,
                                            const unsigned int    f,
                                            const LevelData<dim> &coarse,
-                                           const LevelData<dim> &fine) const
+                                           const LevelData<dim> &fine,
+                                           const bool            friction) const
   {
     auto fine_normal_dof = [&](const unsigned int vertex) {
       return fine.vertex_dofs.at(vertex)[0];
@@ -106,6 +112,16 @@ namespace FoslsContact
     const auto   fine_face = fine_cell->face(f);
     FaceRelation frel;
     frel.coarse_dof = coarse.face_dofs.at(face->index())[0];
+    for (unsigned int m = 1; friction && m < dim; ++m)
+      {
+        FaceRelation::TangentialRow row{coarse.face_dofs.at(face->index())[m], {}};
+        if (fine_cell->has_children())
+          for (unsigned int c = 0; c < fine_face->n_children(); ++c)
+            row.sons.push_back(fine.face_dofs.at(fine_face->child(c)->index())[m]);
+        else
+          row.sons.push_back(fine.face_dofs.at(fine_face->index())[m]);
+        frel.tangential.push_back(row);
+      }
     if (!fine_cell->has_children())
       {
         // not refined: the face is its own son, each vertex its own coarse

@@ -86,19 +86,26 @@ namespace FoslsContact
 
   template <int dim>
   void
-  FluxRerouting<dim>::remove_cut_faces(const unsigned int                    l,
-                                       const std::vector<bool> &             truncated,
-                                       std::vector<types::global_dof_index> &removed)
+  FluxRerouting<dim>::linear_columns(const unsigned int                    l,
+                                     const SparseMatrix<double> &          A,
+                                     const SparseMatrix<double> &          P,
+                                     const std::vector<DoFRole> &          role,
+                                     const std::vector<bool> &             truncated,
+                                     std::vector<types::global_dof_index> &removed,
+                                     std::vector<ColumnEntry> &            entries)
   {
     const auto &coarse = hierarchy.level(l - 1);
     std::fill(scale[l].begin(), scale[l].end(), 1.);
     for (const auto &face : hierarchy.face_relations(l))
-      for (const auto son : face.sons)
-        if (truncated[son])
-          {
-            removed.push_back(coarse.global(face.coarse_dof));
-            break;
-          }
+      {
+        if (std::any_of(face.sons.begin(), face.sons.end(), [&](const auto son) {
+              return truncated[son];
+            }))
+          removed.push_back(coarse.global(face.coarse_dof));
+        for (const auto &row : face.tangential)
+          reroute_column(
+            l, row.coarse_dof, row.sons, face.inside, A, P, role, truncated, removed, entries);
+      }
   }
 
 
@@ -112,49 +119,74 @@ namespace FoslsContact
                               std::vector<types::global_dof_index> &removed,
                               std::vector<ColumnEntry> &            entries)
   {
-    const auto &faces  = hierarchy.face_relations(l);
-    const auto &fine   = hierarchy.level(l);
-    const auto &coarse = hierarchy.level(l - 1);
+    const auto &faces = hierarchy.face_relations(l);
     for (unsigned int k = 0; k < faces.size(); ++k)
-      {
-        const auto &face = faces[k];
-        const auto  j    = face.coarse_dof;
-        scale[l][k]      = 1.;
-        std::vector<types::global_dof_index> free_sons;
-        double                               lost = 0;
-        for (const auto son : face.sons)
-          if (truncated[son])
-            lost += P.el(son, j);
-          else
-            free_sons.push_back(son);
-        if (free_sons.size() == face.sons.size())
-          continue;
-        if (free_sons.empty())
-          {
-            // no flux can pass: the father goes (a coarse function cut at
-            // all its sons would only carry divergence)
-            removed.push_back(coarse.global(j));
-            continue;
-          }
+      scale[l][k] = reroute_column(l,
+                                   faces[k].coarse_dof,
+                                   faces[k].sons,
+                                   faces[k].inside,
+                                   A,
+                                   P,
+                                   role,
+                                   truncated,
+                                   removed,
+                                   entries);
+  }
 
-        // d: the change of the column at the sons
-        std::map<types::global_dof_index, double> d;
-        for (const auto son : face.sons)
-          d[son] = truncated[son] ? -P.el(son, j) : lost / free_sons.size();
-        for (const auto son : free_sons)
-          scale[l][k] = std::max(scale[l][k], P.el(son, j) + d[son]);
-        for (const auto &[son, value] : d)
-          if (!truncated[son])
-            entries.push_back({{double(fine.global(son)), double(coarse.global(j)), value}});
-        correct_column(l, face, A, role, truncated, d, entries);
+
+  template <int dim>
+  double
+  FluxRerouting<dim>::reroute_column(const unsigned int                          l,
+                                     const types::global_dof_index               j,
+                                     const std::vector<types::global_dof_index> &sons,
+                                     const std::vector<types::global_dof_index> &inside,
+                                     const SparseMatrix<double> &                A,
+                                     const SparseMatrix<double> &                P,
+                                     const std::vector<DoFRole> &                role,
+                                     const std::vector<bool> &                   truncated,
+                                     std::vector<types::global_dof_index> &      removed,
+                                     std::vector<ColumnEntry> &                  entries) const
+  {
+    const auto &                         fine   = hierarchy.level(l);
+    const auto &                         coarse = hierarchy.level(l - 1);
+    std::vector<types::global_dof_index> free_sons;
+    double                               lost = 0;
+    for (const auto son : sons)
+      if (truncated[son])
+        lost += P.el(son, j);
+      else
+        free_sons.push_back(son);
+    if (free_sons.size() == sons.size())
+      return 1.;
+    if (free_sons.empty())
+      {
+        // no flux can pass: the father goes (a coarse function cut at
+        // all its sons would only carry divergence)
+        removed.push_back(coarse.global(j));
+        return 1.;
       }
+
+    // d: the change of the column at the sons
+    std::map<types::global_dof_index, double> d;
+    for (const auto son : sons)
+      d[son] = truncated[son] ? -P.el(son, j) : lost / free_sons.size();
+    double scale = 1.;
+    for (const auto son : free_sons)
+      scale = std::max(scale, P.el(son, j) + d[son]);
+    for (const auto &[son, value] : d)
+      if (!truncated[son])
+        entries.push_back({{double(fine.global(son)), double(coarse.global(j)), value}});
+    correct_column(l, j, sons, inside, A, role, truncated, d, entries);
+    return scale;
   }
 
 
   template <int dim>
   void
   FluxRerouting<dim>::correct_column(const unsigned int                               l,
-                                     const FaceRelation &                             face,
+                                     const types::global_dof_index                    j,
+                                     const std::vector<types::global_dof_index> &     sons,
+                                     const std::vector<types::global_dof_index> &     inside,
                                      const SparseMatrix<double> &                     A,
                                      const std::vector<DoFRole> &                     role,
                                      const std::vector<bool> &                        truncated,
@@ -168,9 +200,9 @@ namespace FoslsContact
     // operators fell outside it on the square, with the same iterations)
     const auto &                         fine = hierarchy.level(l);
     std::vector<types::global_dof_index> local;
-    for (const auto i : face.inside)
+    for (const auto i : inside)
       if (!truncated[i] && role[i] == DoFRole::free && d.count(i) == 0 &&
-          std::any_of(face.sons.begin(), face.sons.end(), [&](const auto son) {
+          std::any_of(sons.begin(), sons.end(), [&](const auto son) {
             return entry(l, A, son, i) != 0.;
           }))
         local.push_back(i);
@@ -192,7 +224,7 @@ namespace FoslsContact
       }
     invert_spd(A_local);
     A_local.vmult(e, rhs);
-    const double column = hierarchy.level(l - 1).global(face.coarse_dof);
+    const double column = hierarchy.level(l - 1).global(j);
     for (unsigned int a = 0; a < n; ++a)
       entries.push_back({{double(fine.global(local[a])), column, e[a]}});
   }

@@ -166,7 +166,7 @@ namespace FoslsContact
     if (reroute)
       rerouting.reroute(l, A, hierarchy.prolongation(l), role, truncated, removed, entries);
     else
-      rerouting.remove_cut_faces(l, truncated, removed);
+      rerouting.linear_columns(l, A, hierarchy.prolongation(l), role, truncated, removed, entries);
     apply_face_changes(l, removed, entries);
 
     const auto &coarser = hierarchy.level(l - 1);

@@ -20,8 +20,11 @@ namespace FoslsContact
     , pre_smoother(
         finest + 1, parameters.pre_smoothing, false, &counters.smoothing, parameters.patch_rows)
     , post_smoother(pre_smoother, parameters.post_smoothing, true)
-    // (the plain cycle reroutes the flux of partly truncated coarse faces)
-    , rerouting(hierarchy, fine_sparsity, parameters.krylov_steps == 0)
+    // (the plain cycle reroutes the flux of partly truncated coarse faces,
+    // the linear cycle their tangential rows with friction)
+    , rerouting(hierarchy,
+                fine_sparsity,
+                parameters.krylov_steps == 0 || discretization.get_scene().has_friction())
     , operators(hierarchy, fine_sparsity, rerouting)
     , coarse_solver(&counters.coarse_solve)
     , cycle(hierarchy, this->parameters, pre_smoother, post_smoother, operators, coarse_solver, counters)

@@ -44,6 +44,22 @@ namespace FoslsContact
     types::global_dof_index fine_center = numbers::invalid_dof_index;
     /** 3D: the coarse normal DoFs of the face's bounded vertices. */
     std::vector<types::global_dof_index> coarse_vertices;
+    /**
+     * A tangential row of the face: its coarse RT DoF of stress row m > 0
+     * in the face's rotated coordinates (a tangential traction) and the
+     * sons' DoFs of that row.
+     */
+    struct TangentialRow
+    {
+      types::global_dof_index              coarse_dof;
+      std::vector<types::global_dof_index> sons;
+    };
+    /**
+     * With friction, the face's dim - 1 tangential rows, whose truncated
+     * sons FluxRerouting::linear_columns() treats; empty without friction,
+     * where the tangential tractions are fixed on every level.
+     */
+    std::vector<TangentialRow> tangential;
   };
 
 
@@ -76,7 +92,8 @@ namespace FoslsContact
     /**
      * The entries (local fine DoF, local coarse contact face DoF) the flux
      * rerouting may give the prolongation (MultilevelHierarchy::
-     * rerouting_entries()).
+     * rerouting_entries()): for the normal row of each face, with friction
+     * for its tangential rows too.
      */
     std::vector<std::pair<types::global_dof_index, types::global_dof_index>> rerouting;
 
@@ -84,14 +101,15 @@ namespace FoslsContact
     /**
      * The FaceRelation of contact face @p f of the coarse @p cell, which is
      * @p fine_cell on the fine level's mesh (the same cell, or the parent
-     * of its fine cells).
+     * of its fine cells); its tangential rows if @p friction.
      */
     template <typename Iterator, typename FineIterator>
     FaceRelation face_relation(const Iterator &      cell,
                                const FineIterator &  fine_cell,
                                const unsigned int    f,
                                const LevelData<dim> &coarse,
-                               const LevelData<dim> &fine) const;
+                               const LevelData<dim> &fine,
+                               const bool            friction) const;
   };
 } // namespace FoslsContact
 

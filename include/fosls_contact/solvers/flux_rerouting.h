@@ -22,11 +22,21 @@ namespace FoslsContact
    * - keeps a basis function that carries its flux through the free sons
    *   only (reroute(): the plain cycle). Without it no coarse function can
    *   change the total contact force, and the plain cycle stalls;
-   * - or goes (remove_cut_faces(): the linear cycle that preconditions the
+   * - or goes (linear_columns(): the linear cycle that preconditions the
    *   Newton step, where the rerouted basis converges worse on the finer
    *   half discs).
    * (The cycles of both, with and without rerouting: doc/performance.md,
    * "Figures behind the code".)
+   *
+   * With friction the tangential traction of a contact face is held at
+   * its slip bound by the Newton step's linear problem where it slips, so
+   * where a slip zone ends inside a coarse face its tangential row is cut
+   * too. The linear cycle reroutes that row (linear_columns()): cut, its
+   * column's divergence has no coarse function that can carry the
+   * traction of a free son next to held ones, and CG paid with steps
+   * that grew by about one per level (`prm/sliding_block.prm`, where
+   * Coulomb's bound leaves the traction of the block's end faces free
+   * beside held ones; doc/method.md section 7.7).
    *
    * Rerouting gives the free sons the flux the truncated ones lost and
    * restores the balance of the fine cells at the sons by a local
@@ -58,14 +68,11 @@ namespace FoslsContact
     /**
      * Set up for the levels of @p hierarchy, whose finest level's operator
      * is on @p fine_sparsity; the imports only if @p enabled (the plain
-     * cycle). Collective.
+     * cycle, or friction). Collective.
      */
     FluxRerouting(const MultilevelHierarchy<dim> &hierarchy,
                   const SparsityPattern &         fine_sparsity,
                   const bool                      enabled);
-
-    /** Whether reroute() is used (the plain cycle). */
-    bool enabled() const { return is_enabled; }
 
     /**
      * Import the entries of the operator @p A of level @p l that the
@@ -90,12 +97,18 @@ namespace FoslsContact
                  std::vector<ColumnEntry> &            entries);
 
     /**
-     * The coarse contact faces owned here with a truncated son, for
-     * @p removed (global coarse indices); face_scale(l) is 1.
+     * The columns of the linear cycle: the coarse contact faces owned here
+     * with a truncated normal son go (to @p removed, global coarse
+     * indices); their tangential rows (friction) are rerouted as reroute()
+     * does, into @p entries. face_scale(l) is 1.
      */
-    void remove_cut_faces(const unsigned int                    l,
-                          const std::vector<bool> &             truncated,
-                          std::vector<types::global_dof_index> &removed);
+    void linear_columns(const unsigned int                    l,
+                        const SparseMatrix<double> &          A,
+                        const SparseMatrix<double> &          P,
+                        const std::vector<DoFRole> &          role,
+                        const std::vector<bool> &             truncated,
+                        std::vector<types::global_dof_index> &removed,
+                        std::vector<ColumnEntry> &            entries);
 
     /**
      * Per coarse contact face of level l - 1 owned here (FaceRelation):
@@ -122,17 +135,36 @@ namespace FoslsContact
                  const types::global_dof_index a,
                  const types::global_dof_index b) const;
     /**
-     * The local correction of the rerouted column of face @p face with the
-     * change @p d at its sons: the entries of the free, unbounded DoFs
-     * inside the coarse cell coupled to the sons.
+     * Reroute the column of the coarse DoF @p j of a contact face with the
+     * sons @p sons (one row of the face) and the fine DoFs @p inside its
+     * coarse cell (FaceRelation::inside), if some sons are truncated: the
+     * changes to @p entries, or @p j to @p removed if all are. Returns the
+     * largest weight of a free son (1 if none changed).
      */
-    void correct_column(const unsigned int                                 l,
-                        const FaceRelation &                               face,
-                        const SparseMatrix<double> &                       A,
-                        const std::vector<DoFRole> &                       role,
-                        const std::vector<bool> &                          truncated,
-                        const std::map<types::global_dof_index, double> &  d,
-                        std::vector<ColumnEntry> &                         entries) const;
+    double reroute_column(const unsigned int                          l,
+                          const types::global_dof_index               j,
+                          const std::vector<types::global_dof_index> &sons,
+                          const std::vector<types::global_dof_index> &inside,
+                          const SparseMatrix<double> &                A,
+                          const SparseMatrix<double> &                P,
+                          const std::vector<DoFRole> &                role,
+                          const std::vector<bool> &                   truncated,
+                          std::vector<types::global_dof_index> &      removed,
+                          std::vector<ColumnEntry> &                  entries) const;
+    /**
+     * The local correction of the rerouted column @p j with the change
+     * @p d at its sons @p sons: the entries of the free, unbounded DoFs of
+     * @p inside coupled to the sons.
+     */
+    void correct_column(const unsigned int                               l,
+                        const types::global_dof_index                    j,
+                        const std::vector<types::global_dof_index> &     sons,
+                        const std::vector<types::global_dof_index> &     inside,
+                        const SparseMatrix<double> &                     A,
+                        const std::vector<DoFRole> &                     role,
+                        const std::vector<bool> &                        truncated,
+                        const std::map<types::global_dof_index, double> &d,
+                        std::vector<ColumnEntry> &                       entries) const;
 
     const MultilevelHierarchy<dim> &hierarchy;
     const bool                      is_enabled;

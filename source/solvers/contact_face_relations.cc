@@ -62,8 +62,8 @@ namespace FoslsContact
     const auto &fine       = fine_mesh.level(fine_index);
     const auto &fine_tria  = fine_mesh.get_triangulation();
     const bool  same_mesh  = &coarse_mesh == &fine_mesh;
-    // (without friction the tangential rows are fixed on every level)
-    const unsigned int rows = scene.has_friction() ? dim : 1;
+    const bool         tangential = tangential_rows(scene);
+    const unsigned int rows       = tangential ? dim : 1;
     auto        on_contact = [&](const auto &cell, const unsigned int f) {
       return cell->at_boundary(f) && scene.is_contact(cell->face(f)->boundary_id());
     };
@@ -85,7 +85,7 @@ namespace FoslsContact
               }
             if (coarse.owns(cell))
               faces.push_back(
-                face_relation(cell, fine_cell, f, coarse, fine, scene.has_friction()));
+                face_relation(cell, fine_cell, f, coarse, fine, tangential));
           }
     });
   }
@@ -99,7 +99,7 @@ namespace FoslsContact
                                            const unsigned int    f,
                                            const LevelData<dim> &coarse,
                                            const LevelData<dim> &fine,
-                                           const bool            friction) const
+                                           const bool            tangential) const
   {
     auto fine_normal_dof = [&](const unsigned int vertex) {
       return fine.vertex_dofs.at(vertex)[0];
@@ -112,7 +112,7 @@ namespace FoslsContact
     const auto   fine_face = fine_cell->face(f);
     FaceRelation frel;
     frel.coarse_dof = coarse.face_dofs.at(face->index())[0];
-    for (unsigned int m = 1; friction && m < dim; ++m)
+    for (unsigned int m = 1; tangential && m < dim; ++m)
       {
         FaceRelation::TangentialRow row{coarse.face_dofs.at(face->index())[m], {}};
         if (fine_cell->has_children())

@@ -21,10 +21,11 @@ namespace FoslsContact
         finest + 1, parameters.pre_smoothing, false, &counters.smoothing, parameters.patch_rows)
     , post_smoother(pre_smoother, parameters.post_smoothing, true)
     // (the plain cycle reroutes the flux of partly truncated coarse faces,
-    // the linear cycle their tangential rows with friction)
+    // the linear cycle their tangential rows with friction in 2D)
     , rerouting(hierarchy,
                 fine_sparsity,
-                parameters.krylov_steps == 0 || discretization.get_scene().has_friction())
+                parameters.krylov_steps == 0 ||
+                  ContactFaceRelations<dim>::tangential_rows(discretization.get_scene()))
     , operators(hierarchy, fine_sparsity, rerouting)
     , coarse_solver(&counters.coarse_solve)
     , cycle(hierarchy, this->parameters, pre_smoother, post_smoother, operators, coarse_solver, counters)

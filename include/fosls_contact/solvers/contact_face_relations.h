@@ -55,9 +55,10 @@ namespace FoslsContact
       std::vector<types::global_dof_index> sons;
     };
     /**
-     * With friction, the face's dim - 1 tangential rows, whose truncated
-     * sons FluxRerouting::linear_columns() treats; empty without friction,
-     * where the tangential tractions are fixed on every level.
+     * With friction in 2D, the face's tangential row, whose truncated
+     * sons FluxRerouting::linear_columns() treats; empty otherwise
+     * (ContactFaceRelations::tangential_rows(); without friction the
+     * tangential tractions are fixed on every level).
      */
     std::vector<TangentialRow> tangential;
   };
@@ -87,6 +88,20 @@ namespace FoslsContact
                          const Discretization<dim> &fine_mesh,
                          const unsigned int         fine_index);
 
+    /**
+     * Whether the faces carry their tangential rows (FaceRelation::
+     * tangential): with friction in 2D. In 3D the rerouted tangential
+     * columns took more Newton steps where the traction pairs turn on
+     * their circles: the 3D Cattaneo-Mindlin scene on its graded mesh
+     * (`prm/cattaneo_mindlin_3d_fine.prm`) at most 7 per Tresca problem
+     * instead of 4, and 1,488 s instead of 937 s, the full-slip cube of
+     * `tests/solver/friction_3d` 35 instead of 30 (`bench/friction.py`).
+     */
+    static bool tangential_rows(const Scene<dim> &scene)
+    {
+      return dim == 2 && scene.has_friction();
+    }
+
     /** Coarse contact faces of level l - 1 owned here. */
     std::vector<FaceRelation> faces;
     /**
@@ -101,7 +116,7 @@ namespace FoslsContact
     /**
      * The FaceRelation of contact face @p f of the coarse @p cell, which is
      * @p fine_cell on the fine level's mesh (the same cell, or the parent
-     * of its fine cells); its tangential rows if @p friction.
+     * of its fine cells); its tangential rows if @p tangential.
      */
     template <typename Iterator, typename FineIterator>
     FaceRelation face_relation(const Iterator &      cell,
@@ -109,7 +124,7 @@ namespace FoslsContact
                                const unsigned int    f,
                                const LevelData<dim> &coarse,
                                const LevelData<dim> &fine,
-                               const bool            friction) const;
+                               const bool            tangential) const;
   };
 } // namespace FoslsContact
 

@@ -28,7 +28,7 @@ namespace FoslsContact
    * (The cycles of both, with and without rerouting: doc/performance.md,
    * "Figures behind the code".)
    *
-   * With friction the tangential traction of a contact face is held at
+   * With friction in 2D the tangential traction of a contact face is held at
    * its slip bound by the Newton step's linear problem where it slips, so
    * where a slip zone ends inside a coarse face its tangential row is cut
    * too. The linear cycle reroutes that row (linear_columns()): cut, its

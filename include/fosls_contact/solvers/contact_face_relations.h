@@ -107,8 +107,8 @@ namespace FoslsContact
     /**
      * The entries (local fine DoF, local coarse contact face DoF) the flux
      * rerouting may give the prolongation (MultilevelHierarchy::
-     * rerouting_entries()): for the normal row of each face, with friction
-     * for its tangential rows too.
+     * rerouting_entries()): for the normal row of each face, and for its
+     * tangential rows where the faces carry them (tangential_rows()).
      */
     std::vector<std::pair<types::global_dof_index, types::global_dof_index>> rerouting;
 

@@ -68,7 +68,8 @@ namespace FoslsContact
     /**
      * Set up for the levels of @p hierarchy, whose finest level's operator
      * is on @p fine_sparsity; the imports only if @p enabled (the plain
-     * cycle, or friction). Collective.
+     * cycle, or tangential rows: ContactFaceRelations::tangential_rows()).
+     * Collective.
      */
     FluxRerouting(const MultilevelHierarchy<dim> &hierarchy,
                   const SparsityPattern &         fine_sparsity,
@@ -99,8 +100,8 @@ namespace FoslsContact
     /**
      * The columns of the linear cycle: the coarse contact faces owned here
      * with a truncated normal son go (to @p removed, global coarse
-     * indices); their tangential rows (friction) are rerouted as reroute()
-     * does, into @p entries. face_scale(l) is 1.
+     * indices); their tangential rows (friction in 2D) are rerouted as
+     * reroute() does, into @p entries. face_scale(l) is 1.
      */
     void linear_columns(const unsigned int                    l,
                         const SparseMatrix<double> &          A,

@@ -5,7 +5,10 @@
 # path takes minutes: bench/friction.py runs it, doc/friction_results.md):
 #  - prm/meshes/make_cattaneo_mindlin_3d.py writes the shipped meshes (of
 #    prm/cattaneo_mindlin_3d.prm and, with --finest 64, of
-#    prm/cattaneo_mindlin_3d_fine.prm);
+#    prm/cattaneo_mindlin_3d_fine.prm), with --core K cells of the
+#    finest width from the center out (--finest 32 --core 4: the nodes
+#    0, 1/32, ..., 1/8, 1/4, 1/2 in each direction), and refuses a --core
+#    that is not a power of 2 from 2 to N/2;
 #  - the half-space's far field on the box's top and sides carries the
 #    pressure of Hertz's sphere: on 2 levels, where the contact radius
 #    (Hertz's a = 0.080) spans 2.5 vertex spacings (1/32), the normal force
@@ -33,6 +36,20 @@ for name, options in [("cattaneo_mindlin_3d.msh", []),
     check(filecmp.cmp(generated, os.path.join(R.source, "prm", "meshes", name), shallow=False),
           "prm/meshes/make_cattaneo_mindlin_3d.py %swrites prm/meshes/%s" % (
               " ".join(options) + " " if options else "", name))
+
+core = os.path.join(os.getcwd(), "core.msh")
+generator = [sys.executable, os.path.join(R.source, "prm", "meshes", "make_cattaneo_mindlin_3d.py")]
+subprocess.run(generator + ["--finest", "32", "--core", "4", core], check=True)
+with open(core) as f:
+    lines = f.read().split("$Nodes\n")[1].split("$EndNodes")[0].split("\n")[1:-1]
+xs = sorted({round(float(line.split()[1]) * 32) for line in lines})
+check(xs == [-16, -8, -4, -3, -2, -1, 0, 1, 2, 3, 4, 8, 16],
+      "--finest 32 --core 4: the nodes' x in 1/32: %s" % xs)
+for bad in ["3", "32", "1"]:
+    refused = subprocess.run(generator + ["--finest", "32", "--core", bad, core],
+                             capture_output=True, text=True)
+    check(refused.returncode != 0 and "--core must be a power of 2" in refused.stderr,
+          "--core %s is refused" % bad)
 
 P = 0.001365
 run = R.run("prm/cattaneo_mindlin_3d.prm",

@@ -583,6 +583,8 @@ namespace FoslsContact
         row.constants[change.first] = scene.constant(change.first);
     row.iterations = monitor->iterations();
     row.cycles     = monitor->cycles();
+    if (const auto multilevel = solver->statistics().multilevel)
+      row.linear_rate = multilevel->linear_rate();
     row.converged  = monitor->converged();
     row.functional = J.total;
     row.force      = force;

@@ -23,6 +23,7 @@ namespace FoslsContact
             first = false;
           }
         item << "}, \"iterations\": " << step.iterations << ", \"cycles\": " << step.cycles
+             << ", \"linear_rate\": " << json_number(step.linear_rate)
              << ", \"converged\": " << (step.converged ? "true" : "false")
              << ", \"functional\": " << json_number(step.functional)
              << ", \"contact_force\": " << json_vector<dim>(step.force)
@@ -61,7 +62,7 @@ namespace FoslsContact
     out << "step";
     for (const auto &constant : steps[0].constants)
       out << ',' << constant.first;
-    out << ",iterations,cycles,converged,functional";
+    out << ",iterations,cycles,linear_rate,converged,functional";
     for (unsigned int d = 0; d < dim; ++d)
       out << ",force_" << xyz[d];
     out << ",normal_force,tangential_force," << (dim == 2 ? "contact_width" : "contact_area")
@@ -78,7 +79,8 @@ namespace FoslsContact
         out << s;
         for (const auto &constant : step.constants)
           out << ',' << constant.second;
-        out << ',' << step.iterations << ',' << step.cycles << ',' << (step.converged ? 1 : 0)
+        out << ',' << step.iterations << ',' << step.cycles << ',' << step.linear_rate << ','
+            << (step.converged ? 1 : 0)
             << ',' << step.functional;
         for (unsigned int d = 0; d < dim; ++d)
           out << ',' << step.force[d];

@@ -237,6 +237,9 @@ namespace FoslsContact
       sweeps.push_back(std::to_string(n));
     summary["level_sweeps"] = json_array(sweeps);
     summary["work_units"]   = number(mg->work_units());
+    // the linear cycle as CG's preconditioner in the Newton steps
+    summary["linear_steps"] = std::to_string(mg->linear_steps);
+    summary["linear_rate"]  = number(mg->linear_rate());
     if (parameters.solver.check_coarse_defects)
       {
         summary["coarse_defect_checks"]     = std::to_string(mg->coarse_defect_checks);

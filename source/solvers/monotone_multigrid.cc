@@ -58,6 +58,8 @@ namespace FoslsContact
     multilevel.level_sweeps             = pre_smoother.sweeps();
     multilevel.coarse_defect_checks     = counters.coarse_defect_checks;
     multilevel.coarse_defect_difference = counters.coarse_defect_difference;
+    multilevel.linear_steps             = counters.linear_steps;
+    multilevel.linear_log_reduction     = counters.linear_log_reduction;
     // (the pre- and post-smoother share their patches)
     multilevel.memory = {
       {"multigrid: patch smoothers", pre_smoother.memory_consumption()},

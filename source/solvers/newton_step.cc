@@ -414,6 +414,14 @@ namespace FoslsContact
           {
             // at most krylov_steps steps: the last iterate is the direction
           }
+        // (the linear cycle's rate: MultigridCounters::linear_steps; the
+        // norms are global, so every process adds the same)
+        if (control.last_step() > 0 && control.initial_value() > 0 && control.last_value() > 0)
+          {
+            counters.linear_steps += control.last_step();
+            counters.linear_log_reduction +=
+              std::log(control.last_value() / control.initial_value());
+          }
         cycle.set_linear_pair_terms(nullptr);
         d += increment;
         // (3D friction: the first round's direction is a candidate of the

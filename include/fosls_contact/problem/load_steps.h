@@ -6,6 +6,7 @@
 
 #include <fosls_contact/output/contact_table.h>
 
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -37,6 +38,11 @@ namespace FoslsContact
       /** The values of the constants the load path changes. */
       std::map<std::string, double> constants;
       unsigned int                  iterations = 0, cycles = 0;
+      /**
+       * The residual reduction per linear cycle of the step's Newton
+       * steps (SolverStatistics::Multilevel::linear_rate()), NaN without.
+       */
+      double                        linear_rate = std::numeric_limits<double>::quiet_NaN();
       bool                          converged = false;
       double                        functional = 0;
       Tensor<1, dim>                force;

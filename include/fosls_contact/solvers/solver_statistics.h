@@ -4,6 +4,8 @@
 #include <fosls_contact/qp/matrix_list_memory.h>
 
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -72,6 +74,15 @@ namespace FoslsContact
     /** Solver/Check coarse defects: MonotoneCycle::check_coarse_defect(). */
     unsigned int coarse_defect_checks     = 0;
     double       coarse_defect_difference = 0;
+    /**
+     * The CG steps of the Newton steps' linear solves, each one linear
+     * cycle as the preconditioner, and the sum of the natural logarithms
+     * of the solves' residual reductions (SolverControl's last value over
+     * its initial one): the linear cycle's mean rate
+     * (SolverStatistics::Multilevel::linear_rate()).
+     */
+    unsigned long long linear_steps         = 0;
+    double             linear_log_reduction = 0;
   };
 
   /** What a solver reports of a solve beyond its iterates (summary.json). */
@@ -124,6 +135,21 @@ namespace FoslsContact
        */
       unsigned int coarse_defect_checks     = 0;
       double       coarse_defect_difference = 0;
+      /** MultigridCounters::linear_steps and linear_log_reduction. */
+      unsigned long long linear_steps         = 0;
+      double             linear_log_reduction = 0;
+      /**
+       * The residual reduction per linear cycle of the Newton steps' CG
+       * solves, their geometric mean over all their steps (the rate the
+       * linear cycle gives CG: independent of the level where multigrid
+       * works as it should); NaN without a linear solve.
+       */
+      double
+      linear_rate() const
+      {
+        return linear_steps > 0 ? std::exp(linear_log_reduction / double(linear_steps)) :
+                                  std::numeric_limits<double>::quiet_NaN();
+      }
       /**
        * The bytes this process holds in the solver's structures, by
        * structure (memory_consumption() of each) and level: what the solve

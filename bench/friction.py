@@ -23,8 +23,9 @@ contact), level by level:
 
 For each run: the DoFs, the Tresca problems (one per step for Tresca, the
 fixed point's for Coulomb), the Newton steps per Tresca problem (largest
-and mean), the linear cycles of the whole run, the wall time of the whole
-run, the last step's stick vertices and its tangential force against the
+and mean), the linear cycles of the steps' last Tresca problems, the
+largest of the steps' residual reductions per linear cycle (the CG
+solves of their Newton steps), the wall time of the whole run, the last step's stick vertices and its tangential force against the
 law's (Tresca: s times the contact width; Coulomb: f times the normal
 force); the active set method's run up to --reference-max-level (the
 square) and --block-reference-max-level (the block), with the largest
@@ -123,20 +124,22 @@ def section(binary, title, scene, settings, law, levels, reference_levels, tag, 
     solvers = solvers or SOLVERS
     reference = ([name for name in solvers if name != "multigrid"] or [None])[0]
     rows = ["| level | DoFs | solver | Tresca problems | Newton steps per problem (max, mean) "
-            "| cycles | wall time [s] | last step: stick vertices, Q / law | forces vs. %s |"
-            % (reference or "a reference (none)"),
-            "|---|---|---|---|---|---|---|---|---|"]
+            "| cycles | linear rate (max) | wall time [s] | last step: stick vertices, Q / law "
+            "| forces vs. %s |" % (reference or "a reference (none)"),
+            "|---|---|---|---|---|---|---|---|---|---|"]
     for level in levels:
         runs = solver_runs(binary, scene, settings, level, reference_levels, tag, solvers)
         for solver, r in runs.items():
             s, steps = r["summary"], r["steps"]
             last = (s.get("load_steps") or [{}])[-1]
             cycles = sum(row.get("cycles", 0) for row in s.get("load_steps") or [])
+            rates = [row.get("linear_rate") for row in s.get("load_steps") or []]
+            rate = "%.2g" % max(rates) if rates and None not in rates else ""
             difference = "%.1e" % force_difference(s, runs[reference]["summary"]) \
                 if solver == "multigrid" and reference in runs else ""
-            rows.append("| %d | %d | %s | %d | %d, %.1f | %s | %.2f | %d, %.4f | %s |" % (
+            rows.append("| %d | %d | %s | %d | %d, %.1f | %s | %s | %.2f | %d, %.4f | %s |" % (
                 level, s["dofs"], solver, len(steps), max(steps), sum(steps) / len(steps),
-                cycles if solver == "multigrid" else "", r["wall"],
+                cycles if solver == "multigrid" else "", rate, r["wall"],
                 last.get("stick_vertices", -1), law_ratio(s, law), difference))
     text = "## %s\n\n" % title + "\n".join(rows) + "\n"
     print(text)
@@ -223,7 +226,9 @@ def main():
         "Written by `bench/friction.py` (%s). Each run is a whole load path; `cycles` counts "
         "the linear cycles of the multigrid's Newton steps over the last Tresca problem of "
         "each step (`load_steps.csv`), the Newton steps are those of every Tresca problem "
-        "(the iterations on the screen). The last column is the largest difference of the "
+        "(the iterations on the screen); the linear rate is the residual reduction per linear "
+        "cycle of the CG solves of a step's Newton steps (`load_steps.csv`'s `linear_rate`, "
+        "the geometric mean over their CG steps), the largest of the steps'. The last column is the largest difference of the "
         "steps' normal and tangential forces from the active set method's, relative to the "
         "normal force. Wall times are of the whole run, on this machine's 2 cores.\n"
         % " ".join("--%s %s" % (k.replace("_", "-"), v) for k, v in vars(args).items()

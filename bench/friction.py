@@ -124,9 +124,9 @@ def section(binary, title, scene, settings, law, levels, reference_levels, tag, 
     solvers = solvers or SOLVERS
     reference = ([name for name in solvers if name != "multigrid"] or [None])[0]
     rows = ["| level | DoFs | solver | Tresca problems | Newton steps per problem (max, mean) "
-            "| cycles | linear rate (max) | wall time [s] | last step: stick vertices, Q / law "
+            "| cycles | linear rate (max) | rate per Newton step (max) | wall time [s] | last step: stick vertices, Q / law "
             "| forces vs. %s |" % (reference or "a reference (none)"),
-            "|---|---|---|---|---|---|---|---|---|---|"]
+            "|---|---|---|---|---|---|---|---|---|---|---|"]
     for level in levels:
         runs = solver_runs(binary, scene, settings, level, reference_levels, tag, solvers)
         for solver, r in runs.items():
@@ -135,11 +135,16 @@ def section(binary, title, scene, settings, law, levels, reference_levels, tag, 
             cycles = sum(row.get("cycles", 0) for row in s.get("load_steps") or [])
             rates = [row.get("linear_rate") for row in s.get("load_steps") or []]
             rate = "%.2g" % max(rates) if rates and None not in rates else ""
+            # (NaN in a step without an iteration above the round-off floor)
+            newton = [row.get("iteration_rate") for row in s.get("load_steps") or []]
+            newton = [x for x in newton if x is not None and x == x]
+            newton = "%.2g" % max(newton) if newton else ""
             difference = "%.1e" % force_difference(s, runs[reference]["summary"]) \
                 if solver == "multigrid" and reference in runs else ""
-            rows.append("| %d | %d | %s | %d | %d, %.1f | %s | %s | %.2f | %d, %.4f | %s |" % (
+            rows.append("| %d | %d | %s | %d | %d, %.1f | %s | %s | %s | %.2f | %d, %.4f | %s |" % (
                 level, s["dofs"], solver, len(steps), max(steps), sum(steps) / len(steps),
-                cycles if solver == "multigrid" else "", rate, r["wall"],
+                cycles if solver == "multigrid" else "", rate,
+                newton if solver == "multigrid" else "", r["wall"],
                 last.get("stick_vertices", -1), law_ratio(s, law), difference))
     text = "## %s\n\n" % title + "\n".join(rows) + "\n"
     print(text)
@@ -228,7 +233,10 @@ def main():
         "each step (`load_steps.csv`), the Newton steps are those of every Tresca problem "
         "(the iterations on the screen); the linear rate is the residual reduction per linear "
         "cycle of the CG solves of a step's Newton steps (`load_steps.csv`'s `linear_rate`, "
-        "the geometric mean over their CG steps), the largest of the steps'. The last column is the largest difference of the "
+        "the geometric mean over their CG steps), the largest of the steps'; the rate per "
+        "Newton step is the reduction of the corrections |dx|_A per Newton step over all "
+        "Tresca problems of a step (`load_steps.csv`'s `iteration_rate`, the geometric mean "
+        "over the Newton steps above the round-off floor), the largest of the steps'. The last column is the largest difference of the "
         "steps' normal and tangential forces from the active set method's, relative to the "
         "normal force. Wall times are of the whole run, on this machine's 2 cores.\n"
         % " ".join("--%s %s" % (k.replace("_", "-"), v) for k, v in vars(args).items()

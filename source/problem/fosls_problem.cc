@@ -333,6 +333,7 @@ namespace FoslsContact
         slip_bounds = friction_law->slip_bounds(solution);
         friction_law->set_bounds(qp, slip_bounds);
       }
+    step_reduction = {0., 0u};
     run_solver();
     fixed_point_iterations = 1;
     // (the later Tresca problems' tolerance relative to the first one's
@@ -384,6 +385,9 @@ namespace FoslsContact
     const LevelVector          start(solution);
     solver->solve(qp, solution, *monitor);
     time_solve += wall.wall_time();
+    const auto [log_reduction, iterations] = monitor->measured_reduction();
+    step_reduction.first += log_reduction;
+    step_reduction.second += iterations;
     solve_communication = {communication().exchanges - before.exchanges,
                            communication().values - before.values};
     if (parameters.solver.cross_check)
@@ -585,6 +589,8 @@ namespace FoslsContact
     row.cycles     = monitor->cycles();
     if (const auto multilevel = solver->statistics().multilevel)
       row.linear_rate = multilevel->linear_rate();
+    if (step_reduction.second > 0)
+      row.iteration_rate = std::exp(step_reduction.first / step_reduction.second);
     row.converged  = monitor->converged();
     row.functional = J.total;
     row.force      = force;

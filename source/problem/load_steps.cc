@@ -24,6 +24,7 @@ namespace FoslsContact
           }
         item << "}, \"iterations\": " << step.iterations << ", \"cycles\": " << step.cycles
              << ", \"linear_rate\": " << json_number(step.linear_rate)
+             << ", \"iteration_rate\": " << json_number(step.iteration_rate)
              << ", \"converged\": " << (step.converged ? "true" : "false")
              << ", \"functional\": " << json_number(step.functional)
              << ", \"contact_force\": " << json_vector<dim>(step.force)
@@ -62,7 +63,7 @@ namespace FoslsContact
     out << "step";
     for (const auto &constant : steps[0].constants)
       out << ',' << constant.first;
-    out << ",iterations,cycles,linear_rate,converged,functional";
+    out << ",iterations,cycles,linear_rate,iteration_rate,converged,functional";
     for (unsigned int d = 0; d < dim; ++d)
       out << ",force_" << xyz[d];
     out << ",normal_force,tangential_force," << (dim == 2 ? "contact_width" : "contact_area")
@@ -80,6 +81,7 @@ namespace FoslsContact
         for (const auto &constant : step.constants)
           out << ',' << constant.second;
         out << ',' << step.iterations << ',' << step.cycles << ',' << step.linear_rate << ','
+            << step.iteration_rate << ','
             << (step.converged ? 1 : 0)
             << ',' << step.functional;
         for (unsigned int d = 0; d < dim; ++d)

@@ -185,22 +185,44 @@ namespace FoslsContact
   }
 
 
-  double
-  Monitor::rate_per_cycle() const
+  unsigned int
+  Monitor::last_measured_iteration() const
   {
-    if (history.size() < 3 || n_cycles <= cycles_after_first ||
-        history[1].correction <= 0)
-      return 0.;
     // stop before the round-off floor distorts the measure
     unsigned int last = history.size() - 1;
     while (last > 2 && history[last].correction <= 10. * history[last].round_off)
       --last;
     if (floor_stagnated)
       last = std::max(2u, last - 4);
-    const double reduction = history[last].correction / history[1].correction;
-    const double per_iteration_cycles =
+    return last;
+  }
+
+
+  double
+  Monitor::rate_per_cycle() const
+  {
+    if (history.size() < 3 || n_cycles <= cycles_after_first ||
+        history[1].correction <= 0)
+      return 0.;
+    const unsigned int last      = last_measured_iteration();
+    const double       reduction = history[last].correction / history[1].correction;
+    const double       per_iteration_cycles =
       double(n_cycles - cycles_after_first) / (history.size() - 2);
     return std::pow(reduction, 1. / (per_iteration_cycles * (last - 1)));
+  }
+
+
+  std::pair<double, unsigned int>
+  Monitor::measured_reduction() const
+  {
+    if (history.size() < 3 || history[1].correction <= 0)
+      return {0., 0u};
+    const unsigned int last = last_measured_iteration();
+    // (a run that starts at its floor, as a late Tresca problem of the
+    // Coulomb fixed point may, has nothing to measure)
+    if (history[last].correction <= 10. * history[last].round_off)
+      return {0., 0u};
+    return {std::log(history[last].correction / history[1].correction), last - 1};
   }
 
 

@@ -22,7 +22,10 @@
 #    tangential columns cut at held sons, 65 and 95 on 4 and 5 levels).
 #    The residual reduction per linear cycle of each step's Newton steps
 #    (load_steps' linear_rate, the geometric mean over their CG steps) is
-#    at most 0.3 on every level (measured: at most 0.19).
+#    at most 0.3 on every level (measured: at most 0.19), and so is the
+#    reduction of the corrections per Newton step over each step's Tresca
+#    problems (load_steps' iteration_rate, the geometric mean over the
+#    Newton steps above the round-off floor; measured: at most 0.005).
 # ctest: mpirun sanitize cost=21
 import os
 import sys
@@ -107,6 +110,13 @@ for levels in (3, 4, 5):
     check(len(rates) == 5 and max(rates) <= 0.3,
           "sliding block, %d levels: the linear cycle reduces the residual of CG's linear "
           "problems by at most 0.3 per step" % levels)
+    newton = [row["iteration_rate"] for row in block["load_steps"] or []]
+    print("prm/sliding_block.prm, %d levels: reduction of the corrections per Newton step of "
+          "the steps' Tresca problems %s" % (levels, [rate if rate is None else round(rate, 3)
+                                                    for rate in newton]))
+    check(len(newton) == 5 and None not in newton and max(newton) <= 0.3,
+          "sliding block, %d levels: the Newton steps reduce the corrections by at most 0.3 "
+          "per step" % levels)
     if levels == 3:
         reference = R.run("prm/sliding_block.prm", ["Geometry/Levels=3"] + REFERENCE,
                           "sliding_block_3_active_set")

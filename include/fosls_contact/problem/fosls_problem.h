@@ -240,6 +240,12 @@ namespace FoslsContact
     std::vector<double>                  slip_bounds;
     /** Coulomb: the Tresca problems of the step's fixed point. */
     unsigned int                         fixed_point_iterations = 0;
+    /**
+     * The corrections' reduction over the step's Tresca problems (one
+     * without friction): the sum of Monitor::measured_reduction()'s
+     * logarithms and iterations, for the step's rate per iteration.
+     */
+    std::pair<double, unsigned int>      step_reduction;
     /** The rows of a load path (Data/Load steps), one per step. */
     LoadSteps<dim>                       load_steps;
     /** The step of the adaptive loop (0: the first, uniform mesh). */

@@ -43,6 +43,13 @@ namespace FoslsContact
        * steps (SolverStatistics::Multilevel::linear_rate()), NaN without.
        */
       double                        linear_rate = std::numeric_limits<double>::quiet_NaN();
+      /**
+       * The corrections' reduction per iteration (Newton step or cycle)
+       * of the step's solves, over all its Tresca problems: the geometric
+       * mean of the iterations above the round-off floor
+       * (Monitor::measured_reduction()), NaN if none is.
+       */
+      double                        iteration_rate = std::numeric_limits<double>::quiet_NaN();
       bool                          converged = false;
       double                        functional = 0;
       Tensor<1, dim>                force;

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace FoslsContact
@@ -52,6 +53,14 @@ namespace FoslsContact
      * (|dx_last|_A / |dx_1|_A)^(1 / cycles after the first iteration).
      */
     double rate_per_cycle() const;
+    /**
+     * The corrections' reduction per iteration, as a sum to combine runs
+     * (the Tresca problems of a load step): the logarithm of
+     * |dx_last|_A / |dx_1|_A and the number of iterations it took, with
+     * the last iteration the last one above the round-off floor (as for
+     * rate_per_cycle()); {0, 0} if none after the first is above it.
+     */
+    std::pair<double, unsigned int> measured_reduction() const;
 
     /** A solver had to shorten @p n coarse corrections to stay feasible. */
     void note_feasibility_dampings(const unsigned int n) override
@@ -176,6 +185,8 @@ namespace FoslsContact
     void set_functional_unit(const double factor) { functional_unit = factor; }
 
   private:
+    /** The last iteration whose correction lies above the round-off floor (at least 2). */
+    unsigned int last_measured_iteration() const;
     /**
      * The record of iteration @p x (after @p x_old), appended to the
      * history (with the round-off floor of the corrections at @p x:

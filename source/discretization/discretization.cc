@@ -172,7 +172,7 @@ namespace FoslsContact
 
   template <int dim>
   void
-  Discretization<dim>::refine_as(const Triangulation<dim> &fine, const unsigned int mesh_level)
+  Discretization<dim>::refine_as(const Triangulation<dim> &target)
   {
     AssertThrow(distribution == MeshDistribution::replicated,
                 ExcMessage("Discretization::refine_as(): the mesh is not replicated"));
@@ -180,8 +180,7 @@ namespace FoslsContact
       {
         bool flagged = false;
         for (const auto &cell : triangulation->active_cell_iterators())
-          if (static_cast<unsigned int>(cell->level()) < mesh_level &&
-              fine.create_cell_iterator(cell->id())->has_children())
+          if (target.create_cell_iterator(cell->id())->has_children())
             {
               cell->set_refine_flag();
               flagged = true;
@@ -190,6 +189,9 @@ namespace FoslsContact
           break;
         triangulation->execute_coarsening_and_refinement();
       }
+    AssertThrow(triangulation->n_active_cells() == target.n_active_cells(),
+                ExcMessage("Discretization::refine_as(): the mesh smoothing refined cells "
+                           "that the target mesh does not"));
     setup_dofs_and_levels();
   }
 
@@ -316,29 +318,40 @@ namespace FoslsContact
   void
   Discretization<dim>::set_coupling_pattern(const unsigned int l)
   {
-    // The rows held here: the owned DoFs, and the DoFs of the patches at
-    // the vertices of owned cells (the vertex's displacement, the faces at
-    // it), whose cells are all here.
-    LevelData<dim> &   data    = levels[l];
-    const unsigned int n_local = data.n_local();
-    const unsigned int n_owned = data.n_owned();
+    // The rows held here: the owned DoFs, and the DoFs of the patches
+    // this process relaxes (LevelData::relaxed_vertices: the vertex's
+    // displacement, the faces at it, and at a master vertex those at its
+    // hanging vertices), whose cells are all here.
+    LevelData<dim> &   data       = levels[l];
+    const unsigned int n_local    = data.n_local();
+    const unsigned int n_owned    = data.n_owned();
+    const unsigned int n_vertices = triangulation->n_vertices();
     std::vector<bool>  held(n_local, false);
     for (unsigned int i = 0; i < n_owned; ++i)
       held[i] = true;
-    std::vector<bool> &owned_vertex = data.owned_cell_vertices;
-    owned_vertex.assign(triangulation->n_vertices(), false);
+    set_vertex_masters(data, n_vertices);
+    std::vector<bool> owned_vertex(n_vertices, false);
     data.for_each_cell(dof_handler, [&](const auto &cell) {
       if (data.owns(cell))
         for (const unsigned int v : cell->vertex_indices())
           owned_vertex[cell->vertex_index(v)] = true;
     });
+    data.relaxed_vertices = owned_vertex;
+    if (!data.vertex_masters.empty())
+      for (unsigned int vertex = 0; vertex < n_vertices; ++vertex)
+        if (owned_vertex[vertex])
+          for (std::size_t k = data.vertex_masters_start[vertex];
+               k < data.vertex_masters_start[vertex + 1];
+               ++k)
+            data.relaxed_vertices[data.vertex_masters[k]] = true;
     const PatchDofsInCell<dim>           patch_dofs = patch_dofs_in_cell(fe);
     std::vector<types::global_dof_index> columns;
     data.for_each_cell(dof_handler, [&](const auto &cell) {
       data.get_local_dofs(cell, columns);
       for (const unsigned int v : cell->vertex_indices())
-        if (owned_vertex[cell->vertex_index(v)])
+        data.for_patches_at(cell->vertex_index(v), [&](const unsigned int) {
           for_patch_dofs_in_cell(patch_dofs, columns, v, [&](const auto dof) { held[dof] = true; });
+        });
     });
     {
       // a cell couples its DoFs, and, with hanging nodes eliminated, the

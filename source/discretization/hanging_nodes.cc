@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <limits>
 
+#include <map>
+
 namespace FoslsContact
 {
   template <int dim>
@@ -87,12 +89,40 @@ namespace FoslsContact
   }
 
 
+  template <int dim>
+  void
+  set_vertex_masters(LevelData<dim> &data, const unsigned int n_vertices)
+  {
+    data.vertex_masters_start.clear();
+    data.vertex_masters.clear();
+    if (data.hanging.empty())
+      return;
+    std::map<types::global_dof_index, unsigned int> vertex_of;
+    for (const auto &[vertex, dofs] : data.vertex_dofs)
+      vertex_of[dofs[0]] = vertex;
+    data.vertex_masters_start.assign(n_vertices + 1, 0);
+    for (const auto &[vertex, dofs] : data.vertex_dofs)
+      if (const auto h = data.hanging.find(dofs[0]); h != data.hanging.end())
+        data.vertex_masters_start[vertex + 1] = h->second.size();
+    for (unsigned int v = 0; v < n_vertices; ++v)
+      data.vertex_masters_start[v + 1] += data.vertex_masters_start[v];
+    data.vertex_masters.resize(data.vertex_masters_start.back());
+    for (const auto &[vertex, dofs] : data.vertex_dofs)
+      if (const auto h = data.hanging.find(dofs[0]); h != data.hanging.end())
+        for (std::size_t k = 0; k < h->second.size(); ++k)
+          data.vertex_masters[data.vertex_masters_start[vertex] + k] =
+            vertex_of.at(h->second[k].first);
+  }
+
+
   template void eliminate_hanging_dofs<2>(const DoFHandler<2> &,
                                           AffineConstraints<double> &,
                                           LevelData<2> &);
   template void eliminate_hanging_dofs<3>(const DoFHandler<3> &,
                                           AffineConstraints<double> &,
                                           LevelData<3> &);
+  template void set_vertex_masters<2>(LevelData<2> &, const unsigned int);
+  template void set_vertex_masters<3>(LevelData<3> &, const unsigned int);
   template bool eliminate_hanging_dofs_of_cell<2>(const LevelData<2> &,
                                                   std::vector<types::global_dof_index> &,
                                                   const std::vector<FullMatrix<double> *> &,

@@ -44,15 +44,33 @@ namespace FoslsContact
     sources.resize(finest + 1);
     for (unsigned int l = 0; l < n_uniform; ++l)
       sources[l] = {&discretization, l, l > 0 ? &transfer.prolongation(l) : nullptr};
-    for (unsigned int l = n_uniform; l < finest; ++l)
+    // Level l - 1 is level l with every family of active cells above the
+    // uniform levels coarsened at once (deal.II's
+    // MGTransferGlobalCoarseningTools::create_geometric_coarsening_sequence()
+    // coarsens so), coarsened on a serial copy of the mesh and built as a
+    // mesh of its own from the uniform levels
+    Triangulation<dim> coarsened;
+    coarsened.copy_triangulation(discretization.get_triangulation());
+    coarser.resize(finest - n_uniform);
+    for (unsigned int l = finest - 1; l + 1 > n_uniform; --l)
       {
-        capped.push_back(
-          std::make_unique<Discretization<dim>>(discretization.get_scene(),
-                                                n_uniform,
-                                                discretization.get_communicator(),
-                                                discretization.get_mesh_distribution()));
-        capped.back()->refine_as(discretization.get_triangulation(), l);
-        sources[l] = {capped.back().get(), capped.back()->finest_level(), nullptr};
+        for (const auto &cell : coarsened.active_cell_iterators())
+          if (static_cast<unsigned int>(cell->level()) >= n_uniform)
+            cell->set_coarsen_flag();
+        coarsened.execute_coarsening_and_refinement();
+        // (every family of the finest cells can be coarsened: their
+        // neighbours are at most one level coarser)
+        AssertThrow(coarsened.n_global_levels() == l + 1,
+                    ExcMessage("LevelMeshes: coarsening every family once left cells of mesh "
+                               "level " + std::to_string(coarsened.n_global_levels() - 1) +
+                               " on multigrid level " + std::to_string(l)));
+        auto &mesh = coarser[l - n_uniform];
+        mesh       = std::make_unique<Discretization<dim>>(discretization.get_scene(),
+                                                     n_uniform,
+                                                     discretization.get_communicator(),
+                                                     discretization.get_mesh_distribution());
+        mesh->refine_as(coarsened);
+        sources[l] = {mesh.get(), mesh->finest_level(), nullptr};
       }
     sources[finest] = {&discretization, discretization.finest_level(), nullptr};
     sparsities.resize(finest + 1);
@@ -86,9 +104,15 @@ namespace FoslsContact
     FullMatrix<double>                   embedding(n, n);
     fine.for_each_cell(fine_discretization.get_dof_handler(), [&](const auto &cell) {
       fine.get_local_dofs(cell, fine_dofs);
-      // a cell of level l is a child of a coarse cell that level l refines;
-      // a coarser cell is a cell of level l - 1 too
-      const bool refined_here = static_cast<unsigned int>(cell->level()) == l;
+      // a cell is a cell of level l - 1 too, or a child of a cell of level
+      // l - 1 that level l refines: on a uniform level l - 1 a child of one
+      // of its cells, on an active mesh a cell whose parent is active there
+      const bool refined_here =
+        coarse.active_mesh ?
+          cell->level() > 0 && !coarse_discretization.get_triangulation()
+                                  .create_cell_iterator(cell->parent()->id())
+                                  ->has_children() :
+          static_cast<unsigned int>(cell->level()) > index(l - 1);
       const auto coarse_id    = refined_here ? cell->parent()->id() : cell->id();
       with_cell(coarse_discretization, coarse, coarse_id, [&](const auto &coarse_cell) {
         coarse.get_local_dofs(coarse_cell, coarse_dofs);
@@ -144,13 +168,13 @@ namespace FoslsContact
   LevelBytes
   LevelMeshes<dim>::memory_consumption() const
   {
-    // (capped[k] is the mesh of level n_uniform + k, the levels below it
+    // (coarser[k] is the mesh of level n_uniform + k, the levels below it
     // in sources those of the adaptive mesh's own discretization)
     LevelBytes         bytes     = matrix_list_memory_consumption(matrices, sparsities);
-    const unsigned int n_uniform = matrices.size() - 1 - capped.size();
-    for (unsigned int k = 0; k < capped.size(); ++k)
-      bytes[n_uniform + k] += capped[k]->mesh_memory_consumption() +
-                              total_bytes(capped[k]->level_memory_consumption());
+    const unsigned int n_uniform = matrices.size() - 1 - coarser.size();
+    for (unsigned int k = 0; k < coarser.size(); ++k)
+      bytes[n_uniform + k] += coarser[k]->mesh_memory_consumption() +
+                              total_bytes(coarser[k]->level_memory_consumption());
     return bytes;
   }
 

@@ -72,8 +72,10 @@ namespace FoslsContact
     smooth(l, pre_smoother, ub, r, v, linear); // (v's ghost values are valid afterwards)
     prepare(l, A, role);
     // (an exact coarse solve needs one visit; a level of an adaptive mesh
-    // visits the one below once: there each level has about as many DoFs
-    // as the next, and a W-cycle would visit level l 2^(L-l) times)
+    // visits the one below once: where the refinement narrows to a point
+    // (a corner, the edge of a contact zone) consecutive levels differ by
+    // the few cells around it, and a W-cycle would visit level l up to
+    // 2^(L-l) times)
     const unsigned int visits =
       solved_exactly(l - 1, linear) || *type == Cycle::V || hierarchy.adaptive_level(l) ? 1 : 2;
     double             alpha  = 1.; // the damping of the last visit's correction

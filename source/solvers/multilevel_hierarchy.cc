@@ -49,7 +49,7 @@ namespace FoslsContact
   {
     std::vector<Source> levels;
     for (unsigned int l = 0; l <= finest_level; ++l)
-      levels.push_back({&discretization, l, l > 0 ? &transfer.prolongation(l) : nullptr, -1});
+      levels.push_back({&discretization, l, l > 0 ? &transfer.prolongation(l) : nullptr});
     build(levels);
   }
 
@@ -59,13 +59,8 @@ namespace FoslsContact
   {
     std::vector<Source> levels;
     for (unsigned int l = 0; l <= meshes.finest_level(); ++l)
-      levels.push_back({&meshes.discretization(l),
-                        meshes.index(l),
-                        l > 0 ? &meshes.prolongation(l) : nullptr,
-                        // (the finest level relaxes everywhere: its
-                        // smoother is the one that sees the true
-                        // constraints at every DoF)
-                        !meshes.level(l).active_mesh || l == meshes.finest_level() ? -1 : int(l)});
+      levels.push_back(
+        {&meshes.discretization(l), meshes.index(l), l > 0 ? &meshes.prolongation(l) : nullptr});
     build(levels);
   }
 
@@ -85,9 +80,7 @@ namespace FoslsContact
     for (unsigned int l = 1; l < n; ++l)
       {
         rotate_prolongation(l);
-        level_patches[l] = VertexPatches<dim>(*sources[l].discretization,
-                                              sources[l].index,
-                                              sources[l].local_smoothing);
+        level_patches[l] = VertexPatches<dim>(*sources[l].discretization, sources[l].index);
       }
     if (sources[0].discretization->get_scene().has_contact())
       for (unsigned int l = 1; l < n; ++l)

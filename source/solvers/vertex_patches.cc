@@ -132,33 +132,9 @@ namespace FoslsContact
     constexpr unsigned int none = numbers::invalid_unsigned_int;
 
     /**
-     * The vertices (triangulation indices, of all its levels) whose patches
-     * a level relaxes: all of the level's, or with @p at_cells_of_level
-     * those of the cells of that mesh level. Arrays over the
-     * triangulation's vertex indices rather than maps of this level's
-     * vertices: a lookup per cell vertex was most of the constructor's
-     * time.
-     */
-    template <int dim>
-    std::vector<bool>
-    relaxed_vertices(const DoFHandler<dim> &dof_handler,
-                     const LevelData<dim> & data,
-                     const int              at_cells_of_level)
-    {
-      std::vector<bool> relaxed(dof_handler.get_triangulation().n_vertices(), false);
-      data.for_each_cell(dof_handler, [&](const auto &cell) {
-        if (at_cells_of_level < 0 || cell->level() == at_cells_of_level)
-          for (const unsigned int v : cell->vertex_indices())
-            relaxed[cell->vertex_index(v)] = true;
-      });
-      return relaxed;
-    }
-
-
-    /**
      * The vertices of the cells here, the items of the level scheduling,
-     * in VertexKey order, and the DoFs each relaxed vertex that a cell here
-     * owns gathers from its cells (with repetitions). The DoFs are gathered
+     * in VertexKey order, and the DoFs the patch of each vertex of a cell
+     * this process owns gathers from its cells (with repetitions). The DoFs are gathered
      * in one array (counted, then filled), not in a container per patch,
      * whose many small blocks outlived the constructor as holes in the
      * heap.
@@ -168,7 +144,6 @@ namespace FoslsContact
     {
       LevelVertices(const DoFHandler<dim> &      dof_handler,
                     const LevelData<dim> &       data,
-                    const std::vector<bool> &    relaxed,
                     const PatchDofsInCell<dim> &in_cell);
 
       /** The vertices with their keys, sorted by key. */
@@ -184,13 +159,18 @@ namespace FoslsContact
     template <int dim>
     LevelVertices<dim>::LevelVertices(const DoFHandler<dim> &      dof_handler,
                                       const LevelData<dim> &       data,
-                                      const std::vector<bool> &    relaxed,
                                       const PatchDofsInCell<dim> &in_cell)
-      : position(relaxed.size(), none)
-      , start(relaxed.size() + 1, 0)
+      : position(dof_handler.get_triangulation().n_vertices(), none)
+      , start(dof_handler.get_triangulation().n_vertices() + 1, 0)
     {
-      const unsigned int       n_vertices = relaxed.size();
-      const std::vector<bool> &owned      = data.owned_cell_vertices;
+      const unsigned int       n_vertices = dof_handler.get_triangulation().n_vertices();
+      // (LevelData::for_patches_at(): a vertex's patch, and with hanging
+      // nodes eliminated a master's patch takes the DoFs of the cells at
+      // its hanging vertices too, the support of its basis function;
+      // without them the divergence-free functions of the stress around a
+      // hanging vertex, the curls of the masters' basis functions, belong
+      // to no patch, and an adaptive hierarchy whose coarser levels keep
+      // hanging vertices where the finest has them stalls)
       data.for_each_cell(dof_handler, [&](const auto &cell) {
         for (const unsigned int v : cell->vertex_indices())
           {
@@ -200,8 +180,7 @@ namespace FoslsContact
                 position[vertex] = order.size();
                 order.emplace_back(vertex_key<dim>(cell, v), vertex);
               }
-            if (owned[vertex] && relaxed[vertex])
-              start[vertex + 1] += in_cell[v].size();
+            data.for_patches_at(vertex, [&](const unsigned int p) { start[p + 1] += in_cell[v].size(); });
           }
       });
       for (unsigned int vertex = 0; vertex < n_vertices; ++vertex)
@@ -212,13 +191,11 @@ namespace FoslsContact
       data.for_each_cell(dof_handler, [&](const auto &cell) {
         data.get_local_dofs(cell, dofs);
         for (const unsigned int v : cell->vertex_indices())
-          {
-            const unsigned int vertex = cell->vertex_index(v);
-            if (owned[vertex] && relaxed[vertex])
-              for_patch_dofs_in_cell(in_cell, dofs, v, [&](const auto dof) {
-                gathered[next[vertex]++] = dof;
-              });
-          }
+          data.for_patches_at(cell->vertex_index(v), [&](const unsigned int p) {
+            for_patch_dofs_in_cell(in_cell, dofs, v, [&](const auto dof) {
+              gathered[next[p]++] = dof;
+            });
+          });
       });
       // (distinct vertices have distinct keys; the index only makes the
       // order independent of the cell order should two ever tie)
@@ -293,8 +270,7 @@ namespace FoslsContact
 
   template <int dim>
   VertexPatches<dim>::VertexPatches(const Discretization<dim> &discretization,
-                                    const unsigned int         l,
-                                    const int                  at_cells_of_level)
+                                    const unsigned int         l)
   {
     // Vertex patches in the order of their VertexKey, and their colors. A
     // process relaxes the patches with a DoF it owns; their vertices are
@@ -302,10 +278,7 @@ namespace FoslsContact
     const auto &                dof_handler = discretization.get_dof_handler();
     const auto &                data        = discretization.level(l);
     const PatchDofsInCell<dim> in_cell     = patch_dofs_in_cell(dof_handler.get_fe());
-    const LevelVertices<dim>    vertices(dof_handler,
-                                      data,
-                                      relaxed_vertices(dof_handler, data, at_cells_of_level),
-                                      in_cell);
+    const LevelVertices<dim>    vertices(dof_handler, data, in_cell);
     std::vector<types::global_dof_index> color_dof;
     for (const auto &[k, vertex] : vertices.order)
       color_dof.push_back(data.vertex_dofs.at(vertex)[0]);

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 # The monotone multigrid on adaptively refined meshes (LevelMeshes: one
-# level per mesh level, the levels above the uniform ones meshes with
-# hanging nodes of their own). Every step of every run solves its problem
+# level per mesh level, each below the adaptive mesh the one above with
+# every family coarsened once, meshes with hanging nodes of their own).
+# Every step of every run solves its problem
 # a second time with the active set method (Solver/Cross check). Checked:
 # - every step converges; J never goes up within a solve (no energy
 #   increase) and the last solution is feasible;
@@ -14,7 +15,7 @@
 #   node master or a coarse obstacle that is not one stops far above);
 # - the number of cycles does not grow with the adaptive steps: no step
 #   above 1.6 times the first (uniform) mesh's (measured on the half disc
-#   47, 48, 37, 68, 40 over 4 steps, 7 levels; on the L-shape 10 to 14
+#   47, 44, 38, 62, 43 over 4 steps, 7 levels; on the L-shape 8 to 11
 #   over 8 steps, 11 levels, where uniform meshes take 10 on every level;
 #   a hierarchy whose coarse levels miss the refined region would take
 #   more cycles with every level);
@@ -71,6 +72,15 @@ levels = run["level_dofs"] or []
 print(label + ": %d levels, DoFs %s" % (len(levels), ", ".join(str(n) for n in levels)))
 check(len(levels) == 7 and all(b >= a for a, b in zip(levels, levels[1:])),
       label + ": 7 levels (3 uniform, 3 between, the adaptive mesh), nested")
+# every family coarsened at once from level to level: the levels between
+# shrink toward the uniform ones and together hold fewer DoFs than twice
+# the adaptive mesh (measured 1.25 times; all levels 2.7 times, the uniform
+# base being a third of the finest; capped at each mesh level instead, the
+# levels held 3.9 times the adaptive mesh's DoFs here, 9.6 times on the
+# adaptive square of 13 steps)
+check(sum(levels[3:-1]) < 2 * levels[-1] and all(b > a for a, b in zip(levels[2:], levels[3:])),
+      label + ": the levels between the uniform ones and the adaptive mesh hold fewer DoFs "
+      "than twice the adaptive mesh's, each more than the one below")
 # memory by level on the adaptive hierarchy: the discretization's level data
 # on the uniform levels and the adaptive mesh (the finest), none on the
 # levels between, whose meshes (LevelMeshes' own, with their level data)

@@ -57,7 +57,7 @@ namespace FoslsContact
    *   neighbour of its refined face; for a DoF of a ghost cell that
    *   neighbour need not touch an owned cell, and p4est's ghost layer does
    *   not hold it. With the whole mesh everywhere every master is here,
-   *   and so are the cells that the capped meshes of the multilevel
+   *   and so are the cells that the coarsened meshes of the multilevel
    *   solver (LevelMeshes) are built from. Every DoF is then a ghost of
    *   every process: the work is divided, the vectors are not. deal.II
    *   9.4 does not renumber the levels of such a mesh, so they keep its
@@ -127,18 +127,19 @@ namespace FoslsContact
                 const Parameters::Adaptivity &     adaptivity,
                 const std::vector<LevelVector *> &carried = {});
     /**
-     * Refine this uniformly refined mesh into the mesh of @p fine with
-     * every cell finer than mesh level @p mesh_level replaced by its
-     * ancestor on that level, and set the levels up again (the active
-     * mesh as the finest). These capped meshes are the levels of the
-     * multilevel solver on an adaptively refined mesh (LevelMeshes): they
-     * are nested, and each is balanced as @p fine is (capping the levels
-     * never increases the level difference of two cells at a vertex), so
-     * the mesh's smoothing adds no cells. The cells are found by their
-     * CellId, refined one mesh level at a time. Both meshes replicated
-     * (MeshDistribution). Collective.
+     * Refine this uniformly refined mesh into the mesh @p target, a mesh
+     * on the same coarse mesh that refines the uniform levels (one of the
+     * coarsened meshes that are the levels of the multilevel solver on an
+     * adaptively refined mesh, LevelMeshes), and set the levels up again
+     * (the active mesh as the finest). The cells are found by their CellId
+     * and refined one mesh level at a time; after round k the mesh is
+     * @p target with its cells capped at level k + 1, which is balanced as
+     * @p target is (capping the levels never increases the level
+     * difference of two cells at a vertex), so the mesh's smoothing adds
+     * no cell (checked). Replicated mesh only (MeshDistribution).
+     * Collective.
      */
-    void refine_as(const Triangulation<dim> &fine, const unsigned int mesh_level);
+    void refine_as(const Triangulation<dim> &target);
 
     /**
      * Set every level's data up again from the scene's data functions as

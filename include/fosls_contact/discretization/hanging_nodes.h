@@ -31,6 +31,15 @@ namespace FoslsContact
                          LevelData<dim> &           data);
 
   /**
+   * LevelData::vertex_masters of @p data (of a triangulation with
+   * @p n_vertices vertices) from its hanging displacement DoFs
+   * (LevelData::hanging); empty arrays without hanging nodes.
+   */
+  template <int dim>
+  void
+  set_vertex_masters(LevelData<dim> &data, const unsigned int n_vertices);
+
+  /**
    * The DoFs that the terms of a cell couple, with hanging nodes
    * eliminated (C^T K C): @p dofs (local indices of a level) and the
    * masters of those of them that are constrained (LevelData::hanging),

@@ -185,13 +185,41 @@ namespace FoslsContact
     /** face index -> its RT DoFs (stress row by row). */
     DofsAt face_dofs;
     /**
-     * Whether a vertex (by its index in the triangulation, of all levels)
-     * is a vertex of a cell this process owns on the level: it relaxes the
-     * patches there that have a DoF it owns, and all cells at them are
-     * here. (A bit per vertex of the triangulation; a set of this level's
-     * vertices took 40 bytes each.)
+     * The master vertices of each hanging vertex (those of the masters of
+     * its displacement DoFs), by triangulation vertex index:
+     * vertex_masters[vertex_masters_start[v] .. vertex_masters_start[v+1]),
+     * empty where v does not hang. A master's basis function reaches into
+     * the cells at its hanging vertices, and so does its vertex patch.
      */
-    std::vector<bool> owned_cell_vertices;
+    std::vector<std::size_t>  vertex_masters_start;
+    std::vector<unsigned int> vertex_masters;
+    /**
+     * Whether this process relaxes the patch of a vertex (by its index in
+     * the triangulation, of all levels), if the patch has a DoF it owns:
+     * the vertices of the cells it owns on the level, and the masters of
+     * their hanging vertices; all cells of these patches are here. (A bit
+     * per vertex of the triangulation; a set of this level's vertices
+     * took 40 bytes each.)
+     */
+    std::vector<bool> relaxed_vertices;
+
+    /**
+     * Call @p f(p) for each vertex p whose patch takes the DoFs that a
+     * cell has at its vertex @p vertex and that this process relaxes:
+     * @p vertex itself and the masters of a hanging one.
+     */
+    template <typename Function>
+    void
+    for_patches_at(const unsigned int vertex, const Function &f) const
+    {
+      if (relaxed_vertices[vertex])
+        f(vertex);
+      if (!vertex_masters_start.empty())
+        for (std::size_t k = vertex_masters_start[vertex]; k < vertex_masters_start[vertex + 1];
+             ++k)
+          if (relaxed_vertices[vertex_masters[k]])
+            f(vertex_masters[k]);
+    }
   };
 
   /**

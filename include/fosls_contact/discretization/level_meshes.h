@@ -15,19 +15,29 @@ namespace FoslsContact
   /**
    * The levels of the multilevel solvers on an adaptively refined mesh.
    *
-   * Level l is the mesh with every cell finer than mesh level l replaced by
-   * its ancestor on level l: below the uniformly refined levels (where this
-   * is the uniform mesh level l, Discretization::level(l)), above them a
-   * mesh with hanging nodes of its own (Discretization::refine_as()), and
-   * on top the adaptive mesh itself. The levels are nested, each refines
-   * some cells of the one below once, and each is a conforming space with
-   * its hanging nodes eliminated as on the adaptive mesh (LevelData::
-   * hanging), so the monotone multilevel method sees them as it sees the
-   * uniform levels: a hierarchy of nested spaces with prolongations,
-   * vertex patches and contact faces. This is deal.II's "global
-   * coarsening" sequence of meshes, one level per mesh level; with one
-   * refinement of the finest cells per adaptive step it is one level per
-   * step, as in adaptive monotone multigrid (Kornhuber, Krause).
+   * The finest level is the adaptive mesh; level l - 1 is level l with
+   * every family of active cells above the uniform levels coarsened at
+   * once, down to the top uniform level (deal.II's global coarsening
+   * sequence, as MGTransferGlobalCoarseningTools::
+   * create_geometric_coarsening_sequence() builds it). Every family of the
+   * finest cells can be coarsened, so level l's cells are at most of mesh
+   * level l, and the levels below the adaptive part are the uniform levels
+   * themselves (Discretization::level(l)). Each level in between is a
+   * mesh with hanging nodes of its own (Discretization::refine_as()), a
+   * conforming space with its hanging nodes eliminated as on the adaptive
+   * mesh (LevelData::hanging); the levels are nested and each refines
+   * some cells of the one below once, so the monotone multilevel method
+   * sees them as it sees the uniform levels: nested spaces with
+   * prolongations, vertex patches and contact faces.
+   *
+   * Why every family at once: the levels then shrink as the uniform
+   * levels do, about by 2^dim where the mesh is refined, and hold 1.4 to
+   * 1.7 times the adaptive mesh's DoFs together (`summary.json`'s
+   * `level_dofs`; doc/method.md, section 9). Capping the mesh at each mesh
+   * level instead keeps every cell coarser than the cap, so that each
+   * level above the uniform ones has about as many DoFs as the adaptive
+   * mesh: 9.6 times its DoFs in all on the adaptive square, whose
+   * Galerkin operators and meshes then took most of the run's memory.
    *
    * The prolongation from level l - 1 to level l is the same function:
    * the identity on a cell both levels have, the FESystem's embedding with
@@ -35,8 +45,8 @@ namespace FoslsContact
    * level l refines, applied to the coarse function with its hanging DoFs
    * restored from their masters; the rows of the fine hanging DoFs are
    * empty (they are eliminated). Below the adaptive part the prolongations
-   * are LevelTransfer's. The capped meshes are held as the adaptive mesh
-   * is (Discretization::MeshDistribution::replicated: whole on every
+   * are LevelTransfer's. The coarsened meshes are held as the adaptive
+   * mesh is (Discretization::MeshDistribution::replicated: whole on every
    * process, each partitioned on its own), so the coarse cell of every
    * fine cell, and every coarse DoF, is on every process.
    */
@@ -94,7 +104,7 @@ namespace FoslsContact
     };
     std::vector<Source> sources;
     /** The meshes between the uniform levels and the adaptive mesh. */
-    std::vector<std::unique_ptr<Discretization<dim>>> capped;
+    std::vector<std::unique_ptr<Discretization<dim>>> coarser;
     std::vector<std::unique_ptr<SparsityPattern>>      sparsities;
     std::vector<std::unique_ptr<SparseMatrix<double>>> matrices;
   };

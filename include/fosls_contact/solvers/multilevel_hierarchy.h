@@ -40,7 +40,7 @@ namespace FoslsContact
 
     /**
      * The levels of an adaptively refined mesh (LevelMeshes): the uniform
-     * levels, the capped meshes and the adaptive mesh on top.
+     * levels, the coarsened meshes and the adaptive mesh on top.
      */
     explicit MultilevelHierarchy(const LevelMeshes<dim> &meshes);
 
@@ -121,12 +121,6 @@ namespace FoslsContact
       const Discretization<dim> * discretization;
       unsigned int                index;
       const SparseMatrix<double> *prolongation;
-      /**
-       * Relax only the patches at the cells of this mesh level (-1: all):
-       * on the levels between the uniform ones and the adaptive mesh,
-       * whose other cells are cells of the level below.
-       */
-      int local_smoothing;
     };
 
     /** Everything above, for the levels @p sources. */

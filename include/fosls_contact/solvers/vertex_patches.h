@@ -55,14 +55,12 @@ namespace FoslsContact
   {
     VertexPatches() = default;
     /**
-     * The patches of level @p l of @p discretization, and their colors;
-     * with @p at_cells_of_level, only the patches of the vertices of the
-     * cells of that mesh level (local smoothing: on a level of an adaptive
-     * mesh, LevelMeshes, the cells it refines). Collective.
+     * The patches of level @p l of @p discretization, and their colors.
+     * With hanging nodes eliminated the patch of a master vertex takes the
+     * DoFs of the cells at its hanging vertices too (the support of its
+     * basis function). Collective.
      */
-    VertexPatches(const Discretization<dim> &discretization,
-                  const unsigned int         l,
-                  const int                  at_cells_of_level = -1);
+    VertexPatches(const Discretization<dim> &discretization, const unsigned int l);
 
     /** Each patch sorted by global index, in local indices, in VertexKey order. */
     std::vector<std::vector<types::global_dof_index>> patches;

@@ -75,9 +75,8 @@ check(len(levels) == 7 and all(b >= a for a, b in zip(levels, levels[1:])),
 # every family coarsened at once from level to level: the levels between
 # shrink toward the uniform ones and together hold fewer DoFs than twice
 # the adaptive mesh (measured 1.25 times; all levels 2.7 times, the uniform
-# base being a third of the finest; capped at each mesh level instead, the
-# levels held 3.9 times the adaptive mesh's DoFs here, 9.6 times on the
-# adaptive square of 13 steps)
+# base being a third of the finest; a sequence capped at each mesh level
+# would hold about the adaptive mesh's DoFs on every level between)
 check(sum(levels[3:-1]) < 2 * levels[-1] and all(b > a for a, b in zip(levels[2:], levels[3:])),
       label + ": the levels between the uniform ones and the adaptive mesh hold fewer DoFs "
       "than twice the adaptive mesh's, each more than the one below")

@@ -36,8 +36,8 @@ namespace FoslsContact
    * `level_dofs`; doc/method.md, section 9). Capping the mesh at each mesh
    * level instead keeps every cell coarser than the cap, so that each
    * level above the uniform ones has about as many DoFs as the adaptive
-   * mesh: 9.6 times its DoFs in all on the adaptive square, whose
-   * Galerkin operators and meshes then took most of the run's memory.
+   * mesh, and the Galerkin operators and meshes of the levels grow with
+   * their number (bench/adaptive_memory.py measures the memory).
    *
    * The prolongation from level l - 1 to level l is the same function:
    * the identity on a cell both levels have, the FESystem's embedding with

@@ -17,7 +17,9 @@ namespace FoslsContact
                         "is J), marks cells, refines them (hanging nodes, at most one level "
                         "of difference at a vertex), carries the solution over to the new "
                         "mesh (projected onto its contact constraints) and solves from it. "
-                        "0: uniform refinement only. Needs Solver/Type = monotone multigrid "
+                        "0: uniform refinement only. A load path (Data/Load steps) runs "
+                        "the loop on its first step and solves the later steps on the "
+                        "last mesh. Needs Solver/Type = monotone multigrid "
                         "(on one level per mesh level of the adaptive mesh) or active set. "
                         "On several MPI processes every process holds the whole mesh and "
                         "works on its share of the cells (doc/parallel.md).");

@@ -30,8 +30,10 @@ namespace FoslsContact
                         "'push=0.005; push=0.01; shift=0.002' (a constant keeps "
                         "its value until a step changes it). Each step starts from "
                         "the previous step's solution; every step is a time step "
-                        "of solution.pvd and a row of load_steps.csv. Empty: one "
-                        "step with the constants as given.");
+                        "of solution.pvd and a row of load_steps.csv. With "
+                        "'Adaptivity/Steps' > 0 the first step runs the adaptive "
+                        "loop and the later steps are solved on its last mesh. "
+                        "Empty: one step with the constants as given.");
       prm.declare_entry("Body force",
                         "",
                         Patterns::Anything(),

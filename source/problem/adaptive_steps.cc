@@ -78,10 +78,10 @@ namespace FoslsContact
 
 
   std::string
-  AdaptiveSteps::json() const
+  AdaptiveSteps::json(const unsigned int n) const
   {
     std::vector<std::string> items;
-    for (unsigned int s = 0; s < steps.size(); ++s)
+    for (unsigned int s = 0; s < std::min<std::size_t>(n, steps.size()); ++s)
       {
         const Step &             step = steps[s];
         std::vector<std::string> force;
@@ -120,7 +120,7 @@ namespace FoslsContact
 
 
   std::string
-  AdaptiveSteps::csv() const
+  AdaptiveSteps::csv(const unsigned int n) const
   {
     std::ostringstream out;
     out << "step,cells,dofs,iterations,converged,functional,sqrt_functional,functional_start";
@@ -133,7 +133,7 @@ namespace FoslsContact
            "reference_error_sigma_hdiv,efficiency_index,relative_error_estimate,"
            "max_von_mises\n";
     out << std::setprecision(10);
-    for (unsigned int s = 0; s < steps.size(); ++s)
+    for (unsigned int s = 0; s < std::min<std::size_t>(n, steps.size()); ++s)
       {
         const Step &step = steps[s];
         out << s << ',' << step.cells << ',' << step.dofs << ',' << step.iterations << ','

@@ -130,7 +130,7 @@ namespace FoslsContact
     // the previous load step's solution, or the undeformed body)
     LevelVector        reference;
     const LevelVector *friction_reference = nullptr;
-    if (scene.has_friction() && step > 0 && load_path())
+    if (scene.has_friction() && load_step > 0)
       {
         reference = carried;
         update_ghosts(reference);
@@ -267,25 +267,34 @@ namespace FoslsContact
   {
     TimerOutput::Scope t(timer, "Initial guess");
     const unsigned int L = discretization->finest_level();
-    LevelVector        guess;
-    // (quietly: the guess's own violation is not the start's)
-    const ConditionalOStream quiet(std::cout, false);
-    InitialGuess<dim> initial_guess(parameters, scene, *discretization, *transfer, quiet);
-    initial_guess.compute(qp, guess);
-    initial_guess_work = initial_guess.work_units();
-    discretization->rotate_to_cartesian(L, guess);
     solution.reinit(qp.partitioner);
     solution.copy_locally_owned_data_from(carried);
-    LevelVector change(qp.partitioner), previous(qp.partitioner);
-    change.copy_locally_owned_data_from(guess);
-    previous.copy_locally_owned_data_from(load_step_guess);
-    change -= previous;
-    solution += change;
+    // (Solver/Initial guess reaches the uniform levels only: an adaptive
+    // mesh starts from the previous solution alone)
+    const bool adaptive_mesh = discretization->level(L).active_mesh;
+    if (!adaptive_mesh)
+      {
+        LevelVector guess;
+        // (quietly: the guess's own violation is not the start's)
+        const ConditionalOStream quiet(std::cout, false);
+        InitialGuess<dim> initial_guess(parameters, scene, *discretization, *transfer, quiet);
+        initial_guess.compute(qp, guess);
+        initial_guess_work = initial_guess.work_units();
+        discretization->rotate_to_cartesian(L, guess);
+        LevelVector change(qp.partitioner), previous(qp.partitioner);
+        change.copy_locally_owned_data_from(guess);
+        previous.copy_locally_owned_data_from(load_step_guess);
+        change -= previous;
+        solution += change;
+        load_step_guess = guess;
+      }
+    else
+      initial_guess_work = 0;
     update_ghosts(solution);
     discretization->rotate_to_normal_tangential(L, solution);
-    load_step_guess = guess;
-    pcout << "Initial guess: the previous load step's solution plus the change of the initial "
-             "guess; it violates the constraints (Dirichlet values, contact bounds) by "
+    pcout << "Initial guess: the previous load step's solution"
+          << (adaptive_mesh ? "" : " plus the change of the initial guess")
+          << "; it violates the constraints (Dirichlet values, contact bounds) by "
           << std::scientific << std::setprecision(3)
           << qp.max_violation(solution) * scene.scaling().length << std::defaultfloat
           << " (projected onto them)" << std::endl;
@@ -327,7 +336,7 @@ namespace FoslsContact
     // problem of the undeformed body, which the interpolated solution is far
     // from: on the square the multigrid took 200 iterations for that
     // problem, against 2 to 4 for the others)
-    if (scene.friction_law() == Parameters::Friction::Law::coulomb && step > 0 && !load_path())
+    if (scene.friction_law() == Parameters::Friction::Law::coulomb && start == Start::refined)
       {
         update_ghosts(solution);
         slip_bounds = friction_law->slip_bounds(solution);
@@ -562,7 +571,8 @@ namespace FoslsContact
     steps.add(row);
     // (said once, and kept in summary.json from the step it was found on)
     std::string singular;
-    if (singular_stress.empty() && steps.singular_stress(parameters.scaling.unit_names.stress, singular))
+    if (load_step == 0 && singular_stress.empty() &&
+        steps.singular_stress(parameters.scaling.unit_names.stress, singular))
       {
         singular_stress = singular;
         pcout << "Warning: " << singular_stress << std::endl;
@@ -582,6 +592,7 @@ namespace FoslsContact
                                    const std::vector<typename ContactRow<dim>::Values> &rows)
   {
     typename LoadSteps<dim>::Step row;
+    row.output_index = step;
     for (const auto &changes : parameters.data.load_steps)
       for (const auto &change : changes)
         row.constants[change.first] = scene.constant(change.first);
@@ -612,7 +623,7 @@ namespace FoslsContact
           return scene.obstacle_normal(x / L);
         });
       }
-    load_steps.add(row);
+    load_steps.set(load_step, row);
   }
 
 
@@ -658,7 +669,9 @@ namespace FoslsContact
     // which may change with the step's constants)
     carried = solution;
     discretization->rotate_to_cartesian(L, carried);
-    scene.set_load_step(parameters, step + 1);
+    if (load_step == 0)
+      adaptive_meshes = steps.size();
+    scene.set_load_step(parameters, ++load_step);
     CollectiveError::run(discretization->get_communicator(),
                          [&]() { discretization->update_data(); });
     // (the solver's hierarchy holds the levels' rotations and bounds)
@@ -784,11 +797,11 @@ namespace FoslsContact
     std::map<std::string, std::string> extra_files;
     if (parameters.adaptivity.enabled())
       {
-        pcout << "Adaptive loop: " << steps.size() << " meshes; stopped as " << adaptive_stop
+        pcout << "Adaptive loop: " << adaptive_rows() << " meshes; stopped as " << adaptive_stop
               << std::endl;
-        summary["adaptive_steps"] = steps.json();
+        summary["adaptive_steps"] = steps.json(adaptive_rows());
         summary["adaptive_stop"]  = "\"" + adaptive_stop + "\"";
-        extra_files["adaptive_steps.csv"] = steps.csv();
+        extra_files["adaptive_steps.csv"] = steps.csv(adaptive_rows());
       }
     if (load_path())
       {
@@ -810,8 +823,14 @@ namespace FoslsContact
     if (!finished)
       throw InterruptedRun("interrupted by " + signal +
                            " before the first solve finished: no output written");
-    const std::string kind = load_path() ? "load" : "adaptive";
-    pcout << "Interrupted by " << signal << ": publishing the " << steps.size() << " finished "
+    const std::string  kind = load_path() ? "load" : "adaptive";
+    const unsigned int n_finished = load_path() ? load_steps.size() : steps.size();
+    // (the step under way: the next one, or the first load step again on
+    // a refined mesh)
+    const unsigned int under_way =
+      !load_path() ? steps.size() :
+      start == Start::refined && load_step == 0 ? 1 : n_finished + 1;
+    pcout << "Interrupted by " << signal << ": publishing the " << n_finished << " finished "
           << kind << " step(s)" << std::endl;
     summary                = finished->summary;
     summary["interrupted"] = "\"" + signal + "\"";
@@ -821,12 +840,13 @@ namespace FoslsContact
         summary["load_steps"]    = load_steps.json();
         tables["load_steps.csv"] = load_steps.csv();
       }
-    else
+    if (parameters.adaptivity.enabled())
       {
-        adaptive_stop                = "interrupted by " + signal;
-        summary["adaptive_steps"]    = steps.json();
+        if (load_step == 0)
+          adaptive_stop = "interrupted by " + signal;
+        summary["adaptive_steps"]    = steps.json(adaptive_rows());
         summary["adaptive_stop"]     = "\"" + adaptive_stop + "\"";
-        tables["adaptive_steps.csv"] = steps.csv();
+        tables["adaptive_steps.csv"] = steps.csv(adaptive_rows());
       }
     Postprocessor<dim>(*discretization, parameters, friction_terms())
       .write(finished->contact_table,
@@ -838,8 +858,8 @@ namespace FoslsContact
     // (the screen counts load steps from 1, adaptive steps from 0, the
     // first mesh)
     throw InterruptedRun("interrupted by " + signal + " in " + kind + " step " +
-                         std::to_string(steps.size() + (load_path() ? 1 : 0)) + ": the " +
-                         std::to_string(steps.size()) + " finished step(s) are written to " +
+                         std::to_string(under_way) + ": the " + std::to_string(n_finished) +
+                         " finished step(s) are written to " +
                          parameters.output.directory + "/, summary.json has \"interrupted\"");
   }
 
@@ -893,64 +913,79 @@ namespace FoslsContact
     for (step = 0;; ++step)
       {
         Timer step_wall;
-        if (load_path())
+        if (load_path() && start != Start::refined)
           {
-            pcout << "Load step " << step + 1 << " of " << parameters.data.n_load_steps() << ":";
-            for (const auto &[name, value] : parameters.data.step_overrides(step))
+            pcout << "Load step " << load_step + 1 << " of " << parameters.data.n_load_steps()
+                  << ":";
+            for (const auto &[name, value] : parameters.data.step_overrides(load_step))
               pcout << ' ' << name << " = " << value;
             pcout << std::endl;
           }
         phase("Assembly", [&] { assemble(); });
         phase("Checks: data, rigid motions, definiteness", [&] { check_problem(); });
         phase("Initial guess", [&] {
-          step == 0 ? make_initial_guess() : load_path() ? start_load_step() : start_from_carried();
+          start == Start::first   ? make_initial_guess() :
+          start == Start::refined ? start_from_carried() :
+                                    start_load_step();
         });
         phase("Setup: solver", [&] { setup_solver(); });
         phase("Solve", [&] { solve(); });
-        // (the files of the whole run with the last step's)
+        // (the files of the whole run with the last step's; the adaptive
+        // loop runs on the first step of a load path)
         bool further = false, next_load = false;
         phase("Output", [&] {
           output_step(output);
           steps.set_step_time(step_wall.wall_time());
-          further = !reference_solved && steps.go_on(parameters.adaptivity, adaptive_stop);
+          further = load_step == 0 && !reference_solved &&
+                    steps.go_on(parameters.adaptivity, adaptive_stop);
           // (a load step that did not converge ends the path: the next
           // would start from an unconverged state)
-          next_load = step + 1 < parameters.data.n_load_steps() && monitor->converged();
+          next_load = load_step + 1 < parameters.data.n_load_steps() && monitor->converged();
           if (!further && !reference_pending() && !next_load)
             {
               finish(output);
               published = true;
             }
         });
-        if (next_load)
-          {
-            phase("Load step", [&] { next_load_step(); });
-            continue;
-          }
-        if (!further && !reference_pending())
-          break;
         bool refined = false;
         if (further)
           {
-            phase("Refinement", [&] { refined = refine(); });
+            phase("Refinement", [&] {
+              refined = refine();
+              if (refined)
+                start = Start::refined;
+            });
             if (!refined)
               adaptive_stop = memory_bounds_refinement ?
                                 "the next mesh might not fit into the memory available" :
                                 "the next mesh could have more than Adaptivity/Max DoFs DoFs";
-            if (!refined && !reference_pending())
-              {
-                phase("Output", [&] {
-                  finish(output);
-                  published = true;
-                });
-                break;
-              }
+          }
+        if (!refined && next_load)
+          {
+            phase("Load step", [&] {
+              next_load_step();
+              start = Start::load_step;
+            });
+            continue;
+          }
+        if (!refined && reference_pending())
+          {
+            phase("Refinement", [&] {
+              refine_for_reference();
+              start = Start::refined;
+            });
+            refined = true;
+            pcout << "The reference: the last mesh refined everywhere "
+                  << parameters.adaptivity.reference_refinements << " time(s)" << std::endl;
           }
         if (!refined)
           {
-            phase("Refinement", [&] { refine_for_reference(); });
-            pcout << "The reference: the last mesh refined everywhere "
-                  << parameters.adaptivity.reference_refinements << " time(s)" << std::endl;
+            if (!published)
+              phase("Output", [&] {
+                finish(output);
+                published = true;
+              });
+            break;
           }
         const auto &fine = discretization->level(discretization->finest_level());
         pcout << "Adaptive step " << step + 1 << ": "

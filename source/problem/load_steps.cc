@@ -15,7 +15,7 @@ namespace FoslsContact
       {
         const Step &       step = steps[s];
         std::ostringstream item;
-        item << "{\"step\": " << s << ", \"constants\": {";
+        item << "{\"step\": " << step.output_index << ", \"constants\": {";
         bool first = true;
         for (const auto &[name, value] : step.constants)
           {
@@ -77,7 +77,7 @@ namespace FoslsContact
     for (unsigned int s = 0; s < steps.size(); ++s)
       {
         const Step &step = steps[s];
-        out << s;
+        out << step.output_index;
         for (const auto &constant : step.constants)
           out << ',' << constant.second;
         out << ',' << step.iterations << ',' << step.cycles << ',' << step.linear_rate << ','

@@ -31,51 +31,17 @@
 #    round-off floor of the comparison, not a dependence on the processes).
 # ctest: mpirun timeout=400 cost=190
 import csv
-import math
 import os
 import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from fosls_runs import Runner, check, check_monotone_feasible, finish, rounded
+from fosls_runs import (Runner, cattaneo_mindlin_2d, check, check_monotone_feasible, finish,
+                        rounded)
 
 R = Runner(sys.argv)
-P, F, RADIUS, E_STAR = 0.01, 0.3, 2., 4.   # E* = 4 mu for nu = 1/2
+P = 0.01   # prm/cattaneo_mindlin.prm
 LOADS = [0., 0.0015, 0.0024]
-
-
-def compare(rows, normal_force, tangential_force):
-    """Hertz's and Cattaneo-Mindlin's figures for one step's contact table."""
-    a = math.sqrt(4 * normal_force * RADIUS / (math.pi * E_STAR))
-    p0 = 2 * normal_force / (math.pi * a)
-    ratio = tangential_force / (F * normal_force)
-    c = a * math.sqrt(1 - ratio)
-
-    def p(x):
-        return p0 * math.sqrt(1 - x * x / (a * a)) if abs(x) < a else 0.
-
-    def q(x):
-        return F * p(x) - (F * p0 * (c / a) * math.sqrt(1 - x * x / (c * c)) if abs(x) < c else 0.)
-
-    x = [float(r["x"]) for r in rows]
-    w = [float(r["boundary_share"]) for r in rows]
-    p_h = [-float(r["sigma_nn"]) for r in rows]
-    q_h = [float(r["traction_t_x"]) for r in rows]   # Q points along +x
-
-    def l2(values):
-        return math.sqrt(sum(wi * v * v for wi, v in zip(w, values)))
-
-    result = {"a": a, "c": c, "ratio": ratio,
-              "pressure_error": l2([ph - p(xi) for ph, xi in zip(p_h, x)]) / l2([p(xi) for xi in x]),
-              "of_fp": l2([qh - q(xi) for qh, xi in zip(q_h, x)]) / l2([F * p(xi) for xi in x])}
-    if ratio > 1e-6:   # (pressed, q = 0 up to round-off)
-        result["of_q"] = l2([qh - q(xi) for qh, xi in zip(q_h, x)]) / l2([q(xi) for xi in x])
-    stick = [i for i, r in enumerate(rows) if r["in_contact"] == "1" and r["status"] == "1"]
-    lo, hi = min(stick), max(stick)
-    result["from"], result["to"] = (x[lo] + x[lo - 1]) / 2, (x[hi] + x[hi + 1]) / 2
-    result["from_error"] = abs(result["from"] + c) / (x[lo] - x[lo - 1])
-    result["to_error"] = abs(result["to"] - c) / (x[hi + 1] - x[hi])
-    return result
 
 
 run = R.run("prm/cattaneo_mindlin.prm", ["Geometry/Levels=8"], "cattaneo_mindlin")
@@ -88,7 +54,7 @@ for k, (Q, step) in enumerate(zip(LOADS, steps)):
     with open(os.path.join(run.directory, "contact_%04d.csv" % k)) as f:
         rows = sorted(csv.DictReader(f), key=lambda r: float(r["x"]))
     normal, tangential = float(step["normal_force"]), float(step["tangential_force"])
-    r = compare(rows, normal, tangential)
+    r = cattaneo_mindlin_2d(rows, normal, tangential)
     figures.append(r)
     print("Q = %g: P = %s, Q = %s, Q/(f P) = %s; Hertz a = %s, pressure error %s%%" % (
         Q, rounded(normal, 4), rounded(tangential if Q else 0, 4),

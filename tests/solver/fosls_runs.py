@@ -504,3 +504,45 @@ def check_shipped(run, label):
     n = in_contact(run)
     print("%s: %d contact vertices in contact" % (label, n))
     check(n >= 8, label + ": at least 8 contact vertices in contact")
+
+
+def cattaneo_mindlin_2d(rows, normal_force, tangential_force, f=0.3, radius=2., e_star=4.):
+    """Hertz's and Cattaneo-Mindlin's figures for one step's 2D contact
+    table @p rows (sorted by x; the pull along +x), for the friction
+    coefficient @p f, the cylinder's @p radius and E* = @p e_star (those of
+    prm/cattaneo_mindlin.prm: E* = 4 mu for nu = 1/2): a, c,
+    Q/(f P) ("ratio"), the pressure's relative L2 error, the tangential
+    traction's relative to |f p| ("of_fp") and to |q| ("of_q", pulled
+    only), the stick zone's ends midway between its outermost stick vertex
+    and the next one ("from", "to") and their distances from -c and c in
+    those vertex spacings ("from_error", "to_error")."""
+    a = math.sqrt(4 * normal_force * radius / (math.pi * e_star))
+    p0 = 2 * normal_force / (math.pi * a)
+    ratio = tangential_force / (f * normal_force)
+    c = a * math.sqrt(1 - ratio)
+
+    def p(x):
+        return p0 * math.sqrt(1 - x * x / (a * a)) if abs(x) < a else 0.
+
+    def q(x):
+        return f * p(x) - (f * p0 * (c / a) * math.sqrt(1 - x * x / (c * c)) if abs(x) < c else 0.)
+
+    x = [float(r["x"]) for r in rows]
+    w = [float(r["boundary_share"]) for r in rows]
+    p_h = [-float(r["sigma_nn"]) for r in rows]
+    q_h = [float(r["traction_t_x"]) for r in rows]   # Q points along +x
+
+    def l2(values):
+        return math.sqrt(sum(wi * v * v for wi, v in zip(w, values)))
+
+    result = {"a": a, "c": c, "ratio": ratio,
+              "pressure_error": l2([ph - p(xi) for ph, xi in zip(p_h, x)]) / l2([p(xi) for xi in x]),
+              "of_fp": l2([qh - q(xi) for qh, xi in zip(q_h, x)]) / l2([f * p(xi) for xi in x])}
+    if ratio > 1e-6:   # (pressed, q = 0 up to round-off)
+        result["of_q"] = l2([qh - q(xi) for qh, xi in zip(q_h, x)]) / l2([q(xi) for xi in x])
+    stick = [i for i, r in enumerate(rows) if r["in_contact"] == "1" and r["status"] == "1"]
+    lo, hi = min(stick), max(stick)
+    result["from"], result["to"] = (x[lo] + x[lo - 1]) / 2, (x[hi] + x[hi + 1]) / 2
+    result["from_error"] = abs(result["from"] + c) / (x[lo] - x[lo - 1])
+    result["to_error"] = abs(result["to"] - c) / (x[hi + 1] - x[hi])
+    return result

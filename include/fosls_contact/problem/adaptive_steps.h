@@ -138,10 +138,10 @@ namespace FoslsContact
      */
     bool go_on(const Parameters::Adaptivity &adaptivity, std::string &why) const;
 
-    /** A JSON array of one object per step. */
-    std::string json() const;
-    /** One CSV row per step, with a header. */
-    std::string csv() const;
+    /** A JSON array of one object per step, of the first @p n steps. */
+    std::string json(const unsigned int n) const;
+    /** One CSV row per step, of the first @p n steps, with a header. */
+    std::string csv(const unsigned int n) const;
 
   private:
     std::vector<Step> steps;

@@ -173,6 +173,8 @@ namespace FoslsContact
      * solution into the start, where the previous solution alone would
      * meet them only at the boundary (a layer of one cell the solver has
      * to smooth out); with Initial guess = zero it is the previous solution.
+     * So it is on the mesh of an adaptive first step: Solver/Initial guess
+     * solves on the uniform levels, whose transfer ends below that mesh.
      */
     void start_load_step();
     /** Whether the run follows a load path (Data/Load steps). */
@@ -248,8 +250,36 @@ namespace FoslsContact
     std::pair<double, unsigned int>      step_reduction;
     /** The rows of a load path (Data/Load steps), one per step. */
     LoadSteps<dim>                       load_steps;
-    /** The step of the adaptive loop (0: the first, uniform mesh). */
+    /**
+     * The solve of the run: the step of the adaptive loop (0: the first,
+     * uniform mesh), then of the load path; the time of its VTU files in
+     * solution.pvd.
+     */
     unsigned int                         step = 0;
+    /**
+     * The step of the load path (Data/Load steps; 0 without one). Its
+     * first step runs the adaptive loop, the later ones are solved on the
+     * loop's last mesh.
+     */
+    unsigned int                         load_step = 0;
+    /** Where the solve of a step starts. */
+    enum class Start
+    {
+      /** Solver/Initial guess: the run's first solve */
+      first,
+      /** the last solution on the refined mesh (start_from_carried()) */
+      refined,
+      /** the next load step (start_load_step()) */
+      load_step
+    };
+    Start                                start = Start::first;
+    /**
+     * The meshes of the adaptive loop of a load path's first step, once
+     * the path has gone on to its second step.
+     */
+    unsigned int                         adaptive_meshes = 0;
+    /** The rows of steps that belong to the adaptive loop. */
+    unsigned int adaptive_rows() const { return load_step == 0 ? steps.size() : adaptive_meshes; }
     /** The last solution, Cartesian, carried over to the refined mesh. */
     LevelVector                          carried;
     /**

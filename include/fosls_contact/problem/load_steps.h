@@ -35,6 +35,12 @@ namespace FoslsContact
   public:
     struct Step
     {
+      /**
+       * The step's files: their time in solution.pvd and the N of
+       * solution_000N and contact_000N.csv (the step's index, after the
+       * meshes of an adaptive first step).
+       */
+      unsigned int                  output_index = 0;
       /** The values of the constants the load path changes. */
       std::map<std::string, double> constants;
       unsigned int                  iterations = 0, cycles = 0;
@@ -85,7 +91,18 @@ namespace FoslsContact
                             const std::vector<typename ContactRow<dim>::Values> &rows,
                             const Normal &                                       normal);
 
-    void add(const Step &step) { steps.push_back(step); }
+    /**
+     * The row of step @p index: a new last row, or the last row again (the
+     * first step of a load path on each mesh of its adaptive loop).
+     */
+    void set(const unsigned int index, const Step &step)
+    {
+      Assert(index == steps.size() || index + 1 == steps.size(), ExcInternalError());
+      if (index == steps.size())
+        steps.push_back(step);
+      else
+        steps.back() = step;
+    }
     unsigned int size() const { return steps.size(); }
     const Step &back() const { return steps.back(); }
 

@@ -173,6 +173,44 @@ namespace FoslsContact
       }
     return Utilities::MPI::sum(local, x.get_mpi_communicator());
   }
+
+  void
+  eliminated_matrix(const SparseMatrix<double> &A,
+                    const std::vector<bool> &   eliminated,
+                    const unsigned int          n_owned,
+                    SparseMatrix<double> &      M)
+  {
+    M.reinit(A.get_sparsity_pattern());
+    // (a process without DoFs of the level has an empty matrix: nothing
+    // to copy, and copy_from() requires stored entries)
+    if (A.n_nonzero_elements() > 0)
+      M.copy_from(A);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (auto e = M.begin(i); e != M.end(i); ++e)
+        if (eliminated[i] || eliminated[e->column()])
+          e->value() = (i == e->column()) ? 1. : 0.;
+  }
+
+
+  LevelVector
+  eliminated_rhs(const SparseMatrix<double> &A,
+                 const LevelVector &         b,
+                 const LevelVector &         x,
+                 const std::vector<bool> &   eliminated)
+  {
+    const unsigned int n_owned = x.locally_owned_size();
+    LevelVector        rhs(b), xe(x.get_partitioner()), Axe(x.get_partitioner());
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (eliminated[i])
+        xe.local_element(i) = x.local_element(i);
+    vmult(A, Axe, xe);
+    rhs -= Axe;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (eliminated[i])
+        rhs.local_element(i) = x.local_element(i);
+    return rhs;
+  }
+
 } // namespace FoslsContact
 
 // deal.II's vmult kernel on the local elements of LevelVectors

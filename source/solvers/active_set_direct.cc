@@ -26,29 +26,11 @@ namespace FoslsContact
                   const std::vector<bool> &   eliminated,
                   LevelVector &               x)
     {
-      const auto &       partitioner = x.get_partitioner();
-      const unsigned int n_owned     = x.locally_owned_size();
-      SparseMatrix<double> M(A.get_sparsity_pattern());
-      // (a process without DoFs of the level has an empty matrix: nothing
-      // to copy, and copy_from() requires stored entries)
-      if (A.n_nonzero_elements() > 0)
-        M.copy_from(A);
-      // rhs -= A(:, E) x_E, then identity rows/columns on E.
-      LevelVector rhs(b), xe(partitioner), tmp(partitioner);
-      for (unsigned int i = 0; i < n_owned; ++i)
-        if (eliminated[i])
-          xe.local_element(i) = x.local_element(i);
-      vmult(A, tmp, xe);
-      rhs -= tmp;
-      for (unsigned int i = 0; i < n_owned; ++i)
-        for (auto e = M.begin(i); e != M.end(i); ++e)
-          if (eliminated[i] || eliminated[e->column()])
-            e->value() = (i == e->column()) ? 1. : 0.;
-      for (unsigned int i = 0; i < n_owned; ++i)
-        if (eliminated[i])
-          rhs.local_element(i) = x.local_element(i);
+      SparseMatrix<double> M;
+      eliminated_matrix(A, eliminated, x.locally_owned_size(), M);
+      const LevelVector  rhs = eliminated_rhs(A, b, x, eliminated);
       SparseDirectSolver direct;
-      direct.initialize(M, partitioner, factorization_pattern);
+      direct.initialize(M, x.get_partitioner(), factorization_pattern);
       direct.vmult(x, rhs);
     }
 

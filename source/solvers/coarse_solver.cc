@@ -194,14 +194,9 @@ namespace FoslsContact
     for (unsigned int i = 0; i < v_all.size(); ++i)
       held[i] = role_global[i] == DoFRole::fixed || global->diag_element(i) <= 0. ||
                 (role_global[i] == DoFRole::bounded && v_all[i] >= ub_all[i]);
-    // as the active set method's step (solve_reduced() there), so that
-    // the same set gives the same bits
-    SparseMatrix<double> M(global->get_sparsity_pattern());
-    M.copy_from(*global);
-    for (unsigned int i = 0; i < held.size(); ++i)
-      for (auto e = M.begin(i); e != M.end(i); ++e)
-        if (held[i] || held[e->column()])
-          e->value() = (i == e->column()) ? 1. : 0.;
+    // (as the active set method's step, solve_reduced() there)
+    SparseMatrix<double> M;
+    eliminated_matrix(*global, held, held.size(), M);
     held_factor = std::make_unique<SparseDirectSolver>();
     held_factor->initialize(M, serial_partitioner(held.size()));
     ++n_kept_factorizations;
@@ -213,25 +208,19 @@ namespace FoslsContact
   {
     const unsigned int n    = v_all.size();
     const auto         self = serial_partitioner(n);
-    LevelVector        x(self), xe(self), rhs(self), Ax(self);
+    LevelVector        x(self), Ax(self);
     // (a bounded DoF with a zero diagonal, switched off by the truncation,
     // is held at v: its bound may be infinite)
     const auto at_bound = [&](const unsigned int i) {
       return held[i] && role_global[i] == DoFRole::bounded && global->diag_element(i) > 0.;
     };
+    LevelVector r(self);
     for (unsigned int i = 0; i < n; ++i)
       {
-        const double value = at_bound(i) ? ub_all[i] : v_all[i];
-        x.local_element(i)   = value;
-        xe.local_element(i)  = held[i] ? value : 0.;
-        rhs.local_element(i) = r_all[i];
+        x.local_element(i) = at_bound(i) ? ub_all[i] : v_all[i];
+        r.local_element(i) = r_all[i];
       }
-    vmult(*global, Ax, xe);
-    rhs -= Ax;
-    for (unsigned int i = 0; i < n; ++i)
-      if (held[i])
-        rhs.local_element(i) = x.local_element(i);
-    held_factor->vmult(x, rhs);
+    held_factor->vmult(x, eliminated_rhs(*global, r, x, held));
     // the active set method's test of its set, at x: a held bound stays
     // held where its multiplier b - A x is > 0, a free one where x <= ub
     // (written so that a NaN fails it)

@@ -91,6 +91,32 @@ namespace FoslsContact
   double matrix_norm_square(const SparseMatrix<double> &A, const LevelVector &x);
 
   /**
+   * The system of @p A with the DoFs flagged in @p eliminated (all local
+   * DoFs, owned and ghost) held at given values, eliminated symmetrically:
+   * its matrix, A with their rows (the first @p n_owned, the owned ones)
+   * and columns those of the identity, into @p M (reinitialized on A's
+   * pattern). Solved with the right-hand side
+   * of eliminated_rhs() it gives A's solution on the other DoFs and the
+   * held values on these; the active set method's step and the coarse
+   * solver's held factorization build it alike, so that the same set
+   * gives the same bits.
+   */
+  void eliminated_matrix(const SparseMatrix<double> &A,
+                         const std::vector<bool> &   eliminated,
+                         const unsigned int          n_owned,
+                         SparseMatrix<double> &      M);
+
+  /**
+   * The right-hand side of eliminated_matrix()'s system for A y = @p b
+   * with y held at @p x on the DoFs flagged in @p eliminated: b - A x_E,
+   * and x itself on those DoFs.
+   */
+  LevelVector eliminated_rhs(const SparseMatrix<double> &A,
+                             const LevelVector &         b,
+                             const LevelVector &         x,
+                             const std::vector<bool> &   eliminated);
+
+  /**
    * What this process sent to others point to point (ghost updates, the
    * parts of ghost entries sent to their owners, imported matrix entries,
    * parts of Galerkin rows): the number of exchanges and of values, for the

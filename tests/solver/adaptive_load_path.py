@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-# Adaptive refinement along a load path: prm/cattaneo_mindlin.prm from 5
-# uniform levels with Adaptivity/Steps = 8. The adaptive loop runs on the
-# first load step (pressed, Q = 0); the pulls Q = 0.5 f P and 0.8 f P are
-# solved on its last mesh, each from the previous step's solution.
+# Adaptive refinement along a load path: prm/cattaneo_mindlin_adaptive.prm,
+# prm/cattaneo_mindlin.prm from 5 uniform levels with Adaptivity/Steps = 8.
+# The adaptive loop runs on the first load step (pressed, Q = 0); the
+# pulls Q = 0.5 f P and 0.8 f P are solved on its last mesh, each from the
+# previous step's solution.
 #  - the files: adaptive_steps.csv has the loop's 9 meshes (DoFs growing),
 #    load_steps.csv the 3 load steps, each with the time of its files in
 #    solution.pvd (8, 9, 10: after the loop's meshes), contact_000N.csv and
@@ -31,7 +32,7 @@ R = Runner(sys.argv)
 P = 0.01   # prm/cattaneo_mindlin.prm
 LOADS = [0., 0.0015, 0.0024]
 UNIFORM_DOFS = 198146   # 8 uniform levels of the scene (tests/solver/cattaneo_mindlin)
-STEPS = 8
+STEPS = 8   # (Adaptivity/Steps of the scene)
 
 
 def table(run, name):
@@ -39,9 +40,7 @@ def table(run, name):
         return list(csv.DictReader(f))
 
 
-run = R.run("prm/cattaneo_mindlin.prm",
-            ["Geometry/Levels=5", "Adaptivity/Steps=%d" % STEPS, "Output/Write vtu=true"],
-            "adaptive_path")
+run = R.run("prm/cattaneo_mindlin_adaptive.prm", ["Output/Write vtu=true"], "adaptive_path")
 check_monotone_feasible(run, "adaptive path")
 meshes, steps = table(run, "adaptive_steps.csv"), table(run, "load_steps.csv")
 dofs = [int(m["dofs"]) for m in meshes]
@@ -81,7 +80,7 @@ for Q, step in zip(LOADS, steps):
               "Q = %g: the stick zone's ends within one vertex spacing of +-c, the tangential "
               "traction within 5%% of q" % Q)
 
-runs = [R.run("prm/cattaneo_mindlin.prm", ["Geometry/Levels=5", "Adaptivity/Steps=3"],
+runs = [R.run("prm/cattaneo_mindlin_adaptive.prm", ["Adaptivity/Steps=3"],
               "adaptive_path_%d" % n, processes=n) for n in (1, 2)]
 if check(all(r.ok() for r in runs), "1 and 2 processes: both runs succeed"):
     one, two = ([(int(m["dofs"]), int(m["cells"])) for m in table(r, "adaptive_steps.csv")]

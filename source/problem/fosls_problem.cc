@@ -669,8 +669,6 @@ namespace FoslsContact
     // which may change with the step's constants)
     carried = solution;
     discretization->rotate_to_cartesian(L, carried);
-    if (load_step == 0)
-      adaptive_meshes = steps.size();
     scene.set_load_step(parameters, ++load_step);
     CollectiveError::run(discretization->get_communicator(),
                          [&]() { discretization->update_data(); });

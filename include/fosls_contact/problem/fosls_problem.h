@@ -274,12 +274,14 @@ namespace FoslsContact
     };
     Start                                start = Start::first;
     /**
-     * The meshes of the adaptive loop of a load path's first step, once
-     * the path has gone on to its second step.
+     * The rows of steps that belong to the adaptive loop: all, or along a
+     * load path those of its first step (each later step adds one row to
+     * both tables).
      */
-    unsigned int                         adaptive_meshes = 0;
-    /** The rows of steps that belong to the adaptive loop. */
-    unsigned int adaptive_rows() const { return load_step == 0 ? steps.size() : adaptive_meshes; }
+    unsigned int adaptive_rows() const
+    {
+      return load_path() ? steps.size() + 1 - load_steps.size() : steps.size();
+    }
     /** The last solution, Cartesian, carried over to the refined mesh. */
     LevelVector                          carried;
     /**

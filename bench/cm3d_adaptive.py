@@ -17,6 +17,7 @@ a sentence to the report's introduction (what else ran on the machine).
                      [--report-only] [--remark TEXT]
 """
 import argparse
+import bisect
 import csv
 import json
 import os
@@ -95,6 +96,24 @@ def main():
             else "no vertex sticks",
             "%s, %s" % (z.group(5), z.group(6)) if z.group(3) and not pressed else "",
             z.group(7) or ""))
+    # the last mesh's contact vertex spacing along the pull's line through
+    # the contact point (y = 0), at the contact point, at +-c of the last
+    # pull and at the contact's edge
+    with open(os.path.join(out, "contact.csv")) as f:
+        line = sorted(float(r["x"]) for r in csv.DictReader(f) if abs(float(r["y"])) < 1e-12)
+
+    def spacing(x):
+        i = min(max(bisect.bisect_left(line, x), 1), len(line) - 1)
+        return line[i] - line[i - 1]
+
+    if loads and zones:
+        a = float(zones[len(zones) - len(loads)].group(2))   # (pressed: c = a)
+        c = float(zones[-1].group(2))
+        lines += ["", "The last mesh's contact vertices along the pull's line through the contact "
+                  "point are %.5f apart at the contact point, %.5f and %.5f at -c and c of the "
+                  "last pull (c = %.4f), %.5f and %.5f at the contact's edge -a and a "
+                  "(a = %.4f)." % (spacing(0.), spacing(-c), spacing(c), c, spacing(-a),
+                                   spacing(a), a)]
     with open(DOC, "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))

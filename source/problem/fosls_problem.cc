@@ -253,6 +253,8 @@ namespace FoslsContact
     InitialGuess<dim> guess(parameters, scene, *discretization, *transfer, pcout);
     guess.compute(qp, solution);
     initial_guess_work = guess.work_units();
+    initial_guess_rate = guess.measured_rate();
+    initial_guess_levels = guess.level_solves_json();
     if (load_path())
       {
         load_step_guess = solution;
@@ -280,6 +282,8 @@ namespace FoslsContact
         InitialGuess<dim> initial_guess(parameters, scene, *discretization, *transfer, quiet);
         initial_guess.compute(qp, guess);
         initial_guess_work = initial_guess.work_units();
+        initial_guess_rate = initial_guess.measured_rate();
+        initial_guess_levels = initial_guess.level_solves_json();
         discretization->rotate_to_cartesian(L, guess);
         LevelVector change(qp.partitioner), previous(qp.partitioner);
         change.copy_locally_owned_data_from(guess);
@@ -289,7 +293,11 @@ namespace FoslsContact
         load_step_guess = guess;
       }
     else
-      initial_guess_work = 0;
+      {
+        initial_guess_work = 0;
+        initial_guess_rate = 0;
+        initial_guess_levels = "[]";
+      }
     update_ghosts(solution);
     discretization->rotate_to_normal_tangential(L, solution);
     pcout << "Initial guess: the previous load step's solution"
@@ -390,6 +398,7 @@ namespace FoslsContact
                                         SolverChoice<dim>::name(parameters.solver.type));
     monitor->set_functional_unit(scene.scaling().functional(dim));
     monitor->set_reference_correction(reference_correction);
+    monitor->set_rate_floor(initial_guess_rate);
     const CommunicationCounter before = communication();
     const LevelVector          start(solution);
     solver->solve(qp, solution, *monitor);
@@ -487,7 +496,10 @@ namespace FoslsContact
     indicators->compute(solution);
     run_summary.add_solver(summary);
     if (parameters.solver.initial_guess == Parameters::Solver::InitialGuess::nested_iteration)
-      summary["work_units_initial_guess"] = json_number(initial_guess_work);
+      {
+        summary["work_units_initial_guess"] = json_number(initial_guess_work);
+        summary["nested_iteration"]         = initial_guess_levels;
+      }
     run_summary.add_memory(summary, transfer->memory_consumption());
     if (parameters.solver.cross_check)
       summary["cross_check"] = "{\"functional\": " + json_number(cross_check_functional) +
@@ -771,6 +783,8 @@ namespace FoslsContact
     const unsigned int L    = discretization->finest_level();
     const auto &       fine = discretization->level(L);
     initial_guess_work      = 0; // (no coarser solves)
+    initial_guess_rate      = 0;
+    initial_guess_levels    = "[]";
     solution.reinit(qp.partitioner);
     solution.copy_locally_owned_data_from(carried);
     update_ghosts(solution);

@@ -1,11 +1,13 @@
 #include <deal.II/base/mpi.h>
 
 #include <fosls_contact/assembly/fosls_assembler.h>
+#include <fosls_contact/base/json.h>
 #include <fosls_contact/problem/initial_guess.h>
 #include <fosls_contact/problem/solver_choice.h>
 #include <fosls_contact/solvers/active_set_direct.h>
 #include <fosls_contact/solvers/monitor.h>
 
+#include <algorithm>
 #include <iomanip>
 
 namespace FoslsContact
@@ -57,6 +59,10 @@ namespace FoslsContact
                                 quiet,
                                 "initial guess (the solution on level " +
                                   std::to_string(level + 1) + ")");
+    // (each level carries the rates its coarser levels measured on: see
+    // StoppingRules::at_discretization_accuracy())
+    level_monitor.set_rate_floor(rate);
+    level_monitor.require_rates(2);
     if (level == 0)
       ActiveSetDirect().solve(level_qp, x, level_monitor);
     else
@@ -64,6 +70,15 @@ namespace FoslsContact
         const auto solver =
           SolverChoice<dim>::make(parameters.solver, discretization, transfer, level_qp, level);
         solver->solve(level_qp, x, level_monitor);
+        rate = std::max(rate, level_monitor.linear_rate());
+        solves.push_back({level,
+                          level_qp.size(),
+                          level_monitor.iterations(),
+                          level_monitor.cycles(),
+                          level_monitor.stop_reason(),
+                          level_monitor.linear_rate(),
+                          level_monitor.energy_increases(),
+                          level_monitor.converged()});
         // (the level's work units times its DoFs: sweeps times DoFs)
         if (const auto &mg = solver->statistics().multilevel)
           work += mg->work_units() * double(mg->level_dofs.back());
@@ -79,6 +94,8 @@ namespace FoslsContact
     const unsigned int L = discretization.finest_level();
     solution.reinit(qp.partitioner);
     work = 0;
+    rate = 0;
+    solves.clear();
     using IG = Parameters::Solver::InitialGuess;
     switch (parameters.solver.initial_guess)
       {
@@ -145,6 +162,23 @@ namespace FoslsContact
             << penetration * scene.scaling().length
             << std::defaultfloat << ": projected onto the feasible set"
             << std::endl;
+  }
+
+
+  template <int dim>
+  std::string
+  InitialGuess<dim>::level_solves_json() const
+  {
+    std::vector<std::string> items;
+    for (const auto &s : solves)
+      items.push_back("{\"level\": " + std::to_string(s.level + 1) +
+                      ", \"dofs\": " + std::to_string(s.dofs) +
+                      ", \"iterations\": " + std::to_string(s.iterations) +
+                      ", \"cycles\": " + std::to_string(s.cycles) + ", \"stop_reason\": \"" +
+                      s.stop_reason + "\", \"converged\": " + (s.converged ? "true" : "false") +
+                      ", \"linear_rate\": " + json_number(s.linear_rate) +
+                      ", \"energy_increases\": " + std::to_string(s.energy_increases) + "}");
+    return json_array(items);
   }
 
 

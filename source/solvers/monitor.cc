@@ -68,7 +68,10 @@ namespace FoslsContact
     if (parameters.stopping == Parameters::Solver::Stopping::tolerance)
       stop |= r.correction * factor <= parameters.tolerance * norm_x;
     else
-      stop |= rules.at_discretization_accuracy(history, active_set_changed_at);
+      stop |= rules.at_discretization_accuracy(history,
+                                                    active_set_changed_at,
+                                                    rate_floor,
+                                                    minimum_rates);
     has_converged = stop;
     reason        = !stop                                                             ? "" :
                     at_floor                                                          ? "round-off floor" :
@@ -223,6 +226,18 @@ namespace FoslsContact
     if (history[last].correction <= 10. * history[last].round_off)
       return {0., 0u};
     return {std::log(history[last].correction / history[1].correction), last - 1};
+  }
+
+
+  double
+  Monitor::linear_rate() const
+  {
+    // (a correction near its round-off floor has a rate that is noise)
+    double rho = 0.;
+    for (unsigned int k = std::max(active_set_changed_at + 1, 2u); k < history.size(); ++k)
+      if (history[k].correction > 1000. * history[k].round_off)
+        rho = std::max(rho, history[k].rate);
+    return rho;
   }
 
 

@@ -53,7 +53,9 @@ namespace FoslsContact
 
   bool
   StoppingRules::at_discretization_accuracy(const std::vector<IterationRecord> &history,
-                                            const unsigned int active_set_changed_at) const
+                                            const unsigned int active_set_changed_at,
+                                            const double       rate_floor,
+                                            const unsigned int minimum_rates) const
   {
     // J(x) - J(x*) = 1/2 |x - x*|_A^2 (on the final active set) and the
     // algebraic error is about |d|_A rho/(1-rho); J(x) itself estimates the
@@ -66,13 +68,24 @@ namespace FoslsContact
     // method slower than that would stop too early; projected Gauss-Seidel,
     // whose rate is not steady, is refused this criterion, see
     // Parameters::Solver)
+    // The rate of a run that starts next to its solution can be far below
+    // the method's: a level of nested iteration may see a small second
+    // correction after a large first one while the slow modes of the
+    // contact zone have barely moved. Such a level takes at least the rate
+    // its coarser levels measured (rate_floor: the multigrid's rate depends
+    // little on the level), and those levels measure two rates before they
+    // trust them (minimum_rates; doc/method.md section 7.5).
     const IterationRecord &r   = history.back();
     double                 rho = 0.;
     for (unsigned int k = active_set_changed_at + 1; k < history.size(); ++k)
       rho = std::max(rho, history[k].rate);
-    rho                    = std::max(rho, 0.05);
+    rho                    = std::max({rho, 0.05, rate_floor});
     const double algebraic = r.correction * rho / (1. - rho) / std::sqrt(2.);
-    return history.size() > 2 && active_set_changed_at < r.iteration && rho < 1. &&
+    // (the rates of the linear phase: those after the first iteration and
+    // after the active set's last change)
+    const unsigned int rates =
+      r.iteration - std::min(r.iteration, std::max(active_set_changed_at, 1u));
+    return rates >= std::max(minimum_rates, 1u) && rho < 1. &&
            algebraic <=
              parameters.discretization_fraction * std::sqrt(std::max(r.functional.total, 0.));
   }

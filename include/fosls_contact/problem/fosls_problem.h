@@ -341,6 +341,17 @@ namespace FoslsContact
      * the finest level (InitialGuess::work_units()).
      */
     double initial_guess_work = 0;
+    /**
+     * The rate the nested iteration's coarser levels measured, a floor of
+     * the finest level's (InitialGuess::measured_rate()); 0 for the other
+     * starts.
+     */
+    double initial_guess_rate = 0;
+    /**
+     * The nested iteration's solves on the coarser levels, as JSON
+     * (InitialGuess::level_solves_json()).
+     */
+    std::string initial_guess_levels = "[]";
   };
 } // namespace FoslsContact
 

@@ -9,6 +9,9 @@
 #include <fosls_contact/qp/constrained_qp.h>
 #include <fosls_contact/scene/scene.h>
 
+#include <string>
+#include <vector>
+
 namespace FoslsContact
 {
   /**
@@ -42,6 +45,40 @@ namespace FoslsContact
      */
     double work_units() const { return work; }
 
+    /**
+     * The largest rate that the last compute()'s solves on coarser levels
+     * (nested iteration) measured in their linear phase (Monitor::linear_rate()),
+     * 0 for the other guesses: the finest level's solve, which starts next
+     * to its solution, estimates its algebraic error with at least this
+     * rate (Monitor::set_rate_floor()).
+     */
+    double measured_rate() const { return rate; }
+
+    /** What one coarser level's solve of a nested iteration did. */
+    struct LevelSolve
+    {
+      unsigned int level;
+      types::global_dof_index dofs;
+      unsigned int iterations;
+      unsigned int cycles;
+      /** Monitor::stop_reason() */
+      std::string stop_reason;
+      /** Monitor::linear_rate() */
+      double linear_rate;
+      /** J's increases (Monitor::energy_increases(); 0: J monotone) */
+      unsigned int energy_increases;
+      bool converged;
+    };
+    /**
+     * The last compute()'s solves on levels 1 .. finest - 1 (nested
+     * iteration; empty for the other guesses), for summary.json's
+     * `nested_iteration`.
+     */
+    const std::vector<LevelSolve> &level_solves() const { return solves; }
+
+    /** The JSON array of level_solves(). */
+    std::string level_solves_json() const;
+
   private:
     /** Solve the problem assembled on level @p level (for initial guesses). */
     LevelVector solve_on_level(const unsigned int level, const LevelVector *start);
@@ -55,6 +92,10 @@ namespace FoslsContact
     const ConditionalOStream &       pcout;
     /** The sweeps of the coarser levels' solves times their levels' DoFs. */
     double work = 0;
+    /** See measured_rate(). */
+    double rate = 0;
+    /** See level_solves(). */
+    std::vector<LevelSolve> solves;
   };
 } // namespace FoslsContact
 

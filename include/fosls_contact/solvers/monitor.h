@@ -103,6 +103,29 @@ namespace FoslsContact
      * (doc/method.md, section 7.7, "Stopping").
      */
     void set_reference_correction(const double correction) { reference_correction = correction; }
+    /**
+     * A lower bound @p rho for the rate the stopping criterion
+     * "discretization accuracy" estimates the algebraic error with: the
+     * rate a nested iteration's coarser levels measured
+     * (InitialGuess::measured_rate()), for a level that starts so close to
+     * its solution that its own first rates say little.
+     */
+    void set_rate_floor(const double rho) { rate_floor = rho; }
+    /**
+     * The stopping criterion "discretization accuracy" waits for @p n
+     * rates in the linear phase (1 by default) before it trusts the
+     * largest of them: the coarser levels of a nested iteration, whose
+     * rates the finer levels take as their floor. Two corrections alone
+     * can hide a slow method: after a large first correction the second
+     * may be small while the iteration creeps (doc/method.md, section 7.5).
+     */
+    void require_rates(const unsigned int n) { minimum_rates = n; }
+    /**
+     * The largest rate since the active set last changed (the rate the
+     * stopping criterion "discretization accuracy" used; 0 before the
+     * second iteration).
+     */
+    double linear_rate() const;
     /** The energy norm of the first correction (0 before it). */
     double first_correction() const { return history.size() > 1 ? history[1].correction : 0.; }
     /**
@@ -228,6 +251,8 @@ namespace FoslsContact
     std::string                   reason;
     double                        stall_error            = 0;
     double                        reference_correction   = 0;
+    double                        rate_floor             = 0;
+    unsigned int                  minimum_rates          = 1;
     /** set_not_converged()'s reason. */
     std::string not_converged_why;
   };

@@ -34,10 +34,15 @@ namespace FoslsContact
                             bool &                              stagnated) const;
     /**
      * The stopping criterion "discretization accuracy" on @p history, whose
-     * active set last changed at iteration @p active_set_changed_at.
+     * active set last changed at iteration @p active_set_changed_at, with
+     * a rate of at least @p rate_floor (Monitor::set_rate_floor()) and at
+     * least @p minimum_rates rates measured in the linear phase
+     * (Monitor::require_rates()).
      */
     bool at_discretization_accuracy(const std::vector<IterationRecord> &history,
-                                    const unsigned int active_set_changed_at) const;
+                                    const unsigned int active_set_changed_at,
+                                    const double       rate_floor    = 0.,
+                                    const unsigned int minimum_rates = 1) const;
     /**
      * The stall test of Monitor::enable_stall_detection() on @p history,
      * the tolerance relative to @p first_correction

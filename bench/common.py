@@ -55,18 +55,20 @@ def launch(cmd, threads=None, **kwargs):
     return subprocess.run(cmd, env=env, **kwargs)
 
 
-def run(scene, settings, out, binary=None, processes=1, threads=None):
+def run(scene, settings, out, binary=None, processes=1, threads=None,
+        allow_not_converged=False):
     """One run of @p binary on prm/@p scene into the output directory @p out
     (Output/Directory, then @p settings): its summary.json, with the wall
     time of the whole run as "wall_s". A run that fails ends the script
-    with its command and stderr."""
+    with its command and stderr; so does one that does not converge (exit
+    code 2) unless @p allow_not_converged."""
     if isinstance(settings, dict):
         settings = [f"{k}={v}" for k, v in settings.items()]
     cmd = command(scene, [f"Output/Directory={out}"] + list(settings), binary, processes)
     start = time.time()
     p = launch(cmd, threads, capture_output=True, text=True)
     wall = time.time() - start
-    if p.returncode != 0:
+    if p.returncode != 0 and not (allow_not_converged and p.returncode == 2):
         sys.exit(f"failed: {' '.join(cmd)}\n{p.stderr}")
     with open(os.path.join(out, "summary.json")) as f:
         summary = json.load(f)

@@ -100,7 +100,13 @@ def arguments():
                         "--quiet-load (default: no wait)")
     p.add_argument("--quiet-load", type=float, default=1.0)
     p.add_argument("--no-doc", action="store_true", help="print the tables only")
+    p.add_argument("--set", action="append", default=[], metavar="SECTION/NAME=VALUE",
+                   help="a setting of this program's runs beside the scene's (repeatable), "
+                        "e.g. the full multigrid of doc/performance.md section 9; the tables "
+                        "are then printed only")
     a = p.parse_args()
+    a.settings = dict(s.split("=", 1) for s in a.set)
+    a.no_doc = a.no_doc or bool(a.set)
     if len(a.levels) < 3 or a.runs < 1:
         p.error("at least 3 levels and 1 run")
     if not os.path.exists(BIN):
@@ -142,12 +148,16 @@ def wait_quiet(minutes, threshold):
         time.sleep(60)
 
 
+# the settings of every run of this program (--set)
+SETTINGS = {}
+
+
 def run_fosls(level, lam, threads, settings=None, tag=""):
     """One run of this program on the square: wall time, force, DoFs, cycles."""
     out = os.path.join(RES, f"fosls_lambda{lam}_L{level}_t{threads}{tag}")
     s = common.run(SCENE, dict({"Geometry/Levels": level, "Material/lambda": lam,
                                 "Solver/Threads": threads, "Output/Write vtu": "false",
-                                "Output/Verbose": "false"}, **(settings or {})),
+                                "Output/Verbose": "false"}, **SETTINGS, **(settings or {})),
                    out, BIN, 1, threads)
     return {"wall": s["wall_s"], "force": s["contact_force"][1], "dofs": s["dofs"],
             "cycles": s["cycles"]}
@@ -230,6 +240,7 @@ def order_table(sequences):
 
 def main():
     a = arguments()
+    SETTINGS.update(a.settings)
     os.makedirs(RES, exist_ok=True)
     peer = build_peer(a.peer_src)
     if a.wait_quiet > 0:

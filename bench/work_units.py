@@ -13,7 +13,7 @@ accuracy) and three starts:
   work), its coarser levels' sweeps in work units too
   (work_units_initial_guess);
 - full multigrid: nested iteration with the cheap Newton step, one Krylov
-  step (one linear cycle) per Newton step, with F(1,1)- and with
+  step (one linear cycle) per Newton step, with F(1,1)-, V(1,1)- and
   F(1,0)-cycles (FULL_MULTIGRID).
 Each against the default solver converged to Solver/Tolerance: the contact
 force's relative difference and the stop's promise, sqrt(2 (J - J*)) over
@@ -48,10 +48,11 @@ RES = os.path.join(common.RESULTS, "work_units")
 DOC = os.path.join(common.ROOT, "doc", "work_units_results.md")
 # nested iteration with one linear cycle per Newton step (doc/performance.md section 9)
 FULL_MULTIGRID = {
-    f"full multigrid, F(1,{post})": {"Solver/Initial guess": "nested iteration",
-                                     "Solver/Cycle": "F", "Solver/Pre smoothing": 1,
-                                     "Solver/Post smoothing": post, "Solver/Krylov steps": 1}
-    for post in (1, 0)}
+    f"full multigrid, {cycle}(1,{post})": {"Solver/Initial guess": "nested iteration",
+                                           "Solver/Cycle": cycle, "Solver/Pre smoothing": 1,
+                                           "Solver/Post smoothing": post,
+                                           "Solver/Krylov steps": 1}
+    for cycle, post in (("F", 1), ("V", 1), ("F", 0))}
 STARTS = ["coarse solution", "nested iteration"] + list(FULL_MULTIGRID)
 FRACTION = 0.1  # Solver/Discretization fraction's default
 # the curved contacts, each at its scene's levels
@@ -215,8 +216,9 @@ def main():
             "solver (the truncated nonsmooth Newton multigrid, W-cycles with 3 pre- and 3 "
             "post-smoothing sweeps) stopped at discretization accuracy, from the coarse solution "
             "(the default) and by nested iteration; and full multigrid: nested iteration with "
-            "one Krylov step per Newton step and F(1,1)- or F(1,0)-cycles (Solver/Cycle = F, "
-            "Pre smoothing = 1, Post smoothing = 1 or 0, Krylov steps = 1). A work unit is one "
+            "one Krylov step per Newton step and F(1,1)-, V(1,1)- or F(1,0)-cycles (Solver/Cycle "
+            "= F or V, Pre smoothing = 1, Post smoothing = 1 or 0, Krylov steps = 1). A work "
+            "unit is one "
             "patch "
             "sweep over the finest level; a sweep over level l counts level_dofs[l] / "
             "level_dofs[finest] of one (the exact solves of the coarsest level a cycle reaches "

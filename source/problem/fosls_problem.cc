@@ -252,9 +252,7 @@ namespace FoslsContact
     TimerOutput::Scope t(timer, "Initial guess");
     InitialGuess<dim> guess(parameters, scene, *discretization, *transfer, pcout);
     guess.compute(qp, solution);
-    initial_guess_work = guess.work_units();
-    initial_guess_rate = guess.measured_rate();
-    initial_guess_levels = guess.level_solves_json();
+    guess_record = guess.record();
     if (load_path())
       {
         load_step_guess = solution;
@@ -281,9 +279,7 @@ namespace FoslsContact
         const ConditionalOStream quiet(std::cout, false);
         InitialGuess<dim> initial_guess(parameters, scene, *discretization, *transfer, quiet);
         initial_guess.compute(qp, guess);
-        initial_guess_work = initial_guess.work_units();
-        initial_guess_rate = initial_guess.measured_rate();
-        initial_guess_levels = initial_guess.level_solves_json();
+        guess_record = initial_guess.record();
         discretization->rotate_to_cartesian(L, guess);
         LevelVector change(qp.partitioner), previous(qp.partitioner);
         change.copy_locally_owned_data_from(guess);
@@ -293,11 +289,7 @@ namespace FoslsContact
         load_step_guess = guess;
       }
     else
-      {
-        initial_guess_work = 0;
-        initial_guess_rate = 0;
-        initial_guess_levels = "[]";
-      }
+      guess_record = {};
     update_ghosts(solution);
     discretization->rotate_to_normal_tangential(L, solution);
     pcout << "Initial guess: the previous load step's solution"
@@ -398,7 +390,7 @@ namespace FoslsContact
                                         SolverChoice<dim>::name(parameters.solver.type));
     monitor->set_functional_unit(scene.scaling().functional(dim));
     monitor->set_reference_correction(reference_correction);
-    monitor->set_rate_floor(initial_guess_rate);
+    monitor->set_rate_floor(guess_record.rate);
     const CommunicationCounter before = communication();
     const LevelVector          start(solution);
     solver->solve(qp, solution, *monitor);
@@ -497,8 +489,8 @@ namespace FoslsContact
     run_summary.add_solver(summary);
     if (parameters.solver.initial_guess == Parameters::Solver::InitialGuess::nested_iteration)
       {
-        summary["work_units_initial_guess"] = json_number(initial_guess_work);
-        summary["nested_iteration"]         = initial_guess_levels;
+        summary["work_units_initial_guess"] = json_number(guess_record.work_units);
+        summary["nested_iteration"]         = guess_record.level_solves_json();
       }
     run_summary.add_memory(summary, transfer->memory_consumption());
     if (parameters.solver.cross_check)
@@ -782,9 +774,7 @@ namespace FoslsContact
     TimerOutput::Scope t(timer, "Initial guess");
     const unsigned int L    = discretization->finest_level();
     const auto &       fine = discretization->level(L);
-    initial_guess_work      = 0; // (no coarser solves)
-    initial_guess_rate      = 0;
-    initial_guess_levels    = "[]";
+    guess_record            = {}; // (no coarser solves)
     solution.reinit(qp.partitioner);
     solution.copy_locally_owned_data_from(carried);
     update_ghosts(solution);

@@ -12,6 +12,22 @@
 
 namespace FoslsContact
 {
+  std::string
+  InitialGuessRecord::level_solves_json() const
+  {
+    std::vector<std::string> items;
+    for (const auto &s : level_solves)
+      items.push_back("{\"level\": " + std::to_string(s.level + 1) +
+                      ", \"dofs\": " + std::to_string(s.dofs) +
+                      ", \"iterations\": " + std::to_string(s.iterations) +
+                      ", \"cycles\": " + std::to_string(s.cycles) + ", \"stop_reason\": \"" +
+                      s.stop_reason + "\", \"converged\": " + (s.converged ? "true" : "false") +
+                      ", \"linear_rate\": " + json_number(s.linear_rate) +
+                      ", \"energy_increases\": " + std::to_string(s.energy_increases) + "}");
+    return json_array(items);
+  }
+
+
   template <int dim>
   InitialGuess<dim>::InitialGuess(const Parameters::AllParameters &parameters,
                                   const Scene<dim> &               scene,
@@ -61,7 +77,7 @@ namespace FoslsContact
                                   std::to_string(level + 1) + ")");
     // (each level carries the rates its coarser levels measured on: see
     // StoppingRules::at_discretization_accuracy())
-    level_monitor.set_rate_floor(rate);
+    level_monitor.set_rate_floor(guess_record.rate);
     level_monitor.require_rates(2);
     if (level == 0)
       ActiveSetDirect().solve(level_qp, x, level_monitor);
@@ -70,8 +86,8 @@ namespace FoslsContact
         const auto solver =
           SolverChoice<dim>::make(parameters.solver, discretization, transfer, level_qp, level);
         solver->solve(level_qp, x, level_monitor);
-        rate = std::max(rate, level_monitor.linear_rate());
-        solves.push_back({level,
+        guess_record.rate = std::max(guess_record.rate, level_monitor.linear_rate());
+        guess_record.level_solves.push_back({level,
                           level_qp.size(),
                           level_monitor.iterations(),
                           level_monitor.cycles(),
@@ -81,7 +97,7 @@ namespace FoslsContact
                           level_monitor.converged()});
         // (the level's work units times its DoFs: sweeps times DoFs)
         if (const auto &mg = solver->statistics().multilevel)
-          work += mg->work_units() * double(mg->level_dofs.back());
+          guess_record.work_units += mg->work_units() * double(mg->level_dofs.back());
       }
     return x;
   }
@@ -93,9 +109,7 @@ namespace FoslsContact
   {
     const unsigned int L = discretization.finest_level();
     solution.reinit(qp.partitioner);
-    work = 0;
-    rate = 0;
-    solves.clear();
+    guess_record = {};
     using IG = Parameters::Solver::InitialGuess;
     switch (parameters.solver.initial_guess)
       {
@@ -146,7 +160,7 @@ namespace FoslsContact
             break;
           }
       }
-    work /= double(discretization.level(L).n_dofs);
+    guess_record.work_units /= double(discretization.level(L).n_dofs);
     // fixed values are simply set; a penetrating start is worth a note
     double penetration = 0;
     for (unsigned int i = 0; i < qp.n_owned(); ++i)
@@ -162,23 +176,6 @@ namespace FoslsContact
             << penetration * scene.scaling().length
             << std::defaultfloat << ": projected onto the feasible set"
             << std::endl;
-  }
-
-
-  template <int dim>
-  std::string
-  InitialGuess<dim>::level_solves_json() const
-  {
-    std::vector<std::string> items;
-    for (const auto &s : solves)
-      items.push_back("{\"level\": " + std::to_string(s.level + 1) +
-                      ", \"dofs\": " + std::to_string(s.dofs) +
-                      ", \"iterations\": " + std::to_string(s.iterations) +
-                      ", \"cycles\": " + std::to_string(s.cycles) + ", \"stop_reason\": \"" +
-                      s.stop_reason + "\", \"converged\": " + (s.converged ? "true" : "false") +
-                      ", \"linear_rate\": " + json_number(s.linear_rate) +
-                      ", \"energy_increases\": " + std::to_string(s.energy_increases) + "}");
-    return json_array(items);
   }
 
 

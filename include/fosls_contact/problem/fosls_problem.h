@@ -13,6 +13,7 @@
 #include <fosls_contact/parameters/parameters.h>
 #include <fosls_contact/problem/adaptive_steps.h>
 #include <fosls_contact/problem/friction_law.h>
+#include <fosls_contact/problem/initial_guess.h>
 #include <fosls_contact/problem/load_steps.h>
 #include <fosls_contact/problem/run_summary.h>
 #include <fosls_contact/qp/constrained_qp.h>
@@ -337,21 +338,11 @@ namespace FoslsContact
     /** The wall time of the cross check's solve. */
     double time_cross_check = 0;
     /**
-     * The nested iteration's sweeps on the coarser levels, in sweeps over
-     * the finest level (InitialGuess::work_units()).
+     * The initial guess's nested iteration: its work on the coarser levels
+     * and the rate floor of the finest level's stop (InitialGuess::record();
+     * empty for the other starts).
      */
-    double initial_guess_work = 0;
-    /**
-     * The rate the nested iteration's coarser levels measured, a floor of
-     * the finest level's (InitialGuess::measured_rate()); 0 for the other
-     * starts.
-     */
-    double initial_guess_rate = 0;
-    /**
-     * The nested iteration's solves on the coarser levels, as JSON
-     * (InitialGuess::level_solves_json()).
-     */
-    std::string initial_guess_levels = "[]";
+    InitialGuessRecord guess_record;
   };
 } // namespace FoslsContact
 

@@ -15,6 +15,50 @@
 namespace FoslsContact
 {
   /**
+   * What an initial guess hands to the run besides the start itself: the
+   * work and the rates of a nested iteration's solves on the coarser
+   * levels (all zero or empty for the other guesses).
+   */
+  struct InitialGuessRecord
+  {
+    /** What one coarser level's solve of a nested iteration did. */
+    struct LevelSolve
+    {
+      unsigned int            level;
+      types::global_dof_index dofs;
+      unsigned int            iterations;
+      unsigned int            cycles;
+      /** Monitor::stop_reason() */
+      std::string stop_reason;
+      /** Monitor::linear_rate() */
+      double linear_rate;
+      /** J's increases (Monitor::energy_increases(); 0: J monotone) */
+      unsigned int energy_increases;
+      bool         converged;
+    };
+
+    /**
+     * The patch sweeps of the solves on coarser levels, in sweeps over the
+     * finest level: the work the guess adds to the solve's
+     * (SolverStatistics::Multilevel::work_units()).
+     */
+    double work_units = 0;
+    /**
+     * The largest rate those solves measured in their linear phase
+     * (Monitor::linear_rate()): the finest level's solve, which starts
+     * next to its solution, estimates its algebraic error with at least
+     * this rate (Monitor::set_rate_floor()).
+     */
+    double rate = 0;
+    /** The solves on levels 1 .. finest - 1. */
+    std::vector<LevelSolve> level_solves;
+
+    /** level_solves as a JSON array (summary.json's `nested_iteration`). */
+    std::string level_solves_json() const;
+  };
+
+
+  /**
    * The start of the solve on the finest level (Solver/Initial guess):
    * zero, the exact solution of level 1 interpolated (paper section 7),
    * nested iteration over the levels, or Data/Initial displacement. The
@@ -38,46 +82,8 @@ namespace FoslsContact
      */
     void compute(const ConstrainedQP &qp, LevelVector &solution);
 
-    /**
-     * The patch sweeps of the last compute()'s solves on coarser levels
-     * (nested iteration), in sweeps over the finest level: the work the
-     * guess adds to the solve's (SolverStatistics::Multilevel::work_units()).
-     */
-    double work_units() const { return work; }
-
-    /**
-     * The largest rate that the last compute()'s solves on coarser levels
-     * (nested iteration) measured in their linear phase (Monitor::linear_rate()),
-     * 0 for the other guesses: the finest level's solve, which starts next
-     * to its solution, estimates its algebraic error with at least this
-     * rate (Monitor::set_rate_floor()).
-     */
-    double measured_rate() const { return rate; }
-
-    /** What one coarser level's solve of a nested iteration did. */
-    struct LevelSolve
-    {
-      unsigned int level;
-      types::global_dof_index dofs;
-      unsigned int iterations;
-      unsigned int cycles;
-      /** Monitor::stop_reason() */
-      std::string stop_reason;
-      /** Monitor::linear_rate() */
-      double linear_rate;
-      /** J's increases (Monitor::energy_increases(); 0: J monotone) */
-      unsigned int energy_increases;
-      bool converged;
-    };
-    /**
-     * The last compute()'s solves on levels 1 .. finest - 1 (nested
-     * iteration; empty for the other guesses), for summary.json's
-     * `nested_iteration`.
-     */
-    const std::vector<LevelSolve> &level_solves() const { return solves; }
-
-    /** The JSON array of level_solves(). */
-    std::string level_solves_json() const;
+    /** The last compute()'s record (nested iteration's work and rates). */
+    const InitialGuessRecord &record() const { return guess_record; }
 
   private:
     /** Solve the problem assembled on level @p level (for initial guesses). */
@@ -90,12 +96,8 @@ namespace FoslsContact
     const Discretization<dim> &      discretization;
     const LevelTransfer<dim> &       transfer;
     const ConditionalOStream &       pcout;
-    /** The sweeps of the coarser levels' solves times their levels' DoFs. */
-    double work = 0;
-    /** See measured_rate(). */
-    double rate = 0;
-    /** See level_solves(). */
-    std::vector<LevelSolve> solves;
+    /** See record(). */
+    InitialGuessRecord guess_record;
   };
 } // namespace FoslsContact
 

@@ -107,7 +107,7 @@ namespace FoslsContact
      * A lower bound @p rho for the rate the stopping criterion
      * "discretization accuracy" estimates the algebraic error with: the
      * rate a nested iteration's coarser levels measured
-     * (InitialGuess::measured_rate()), for a level that starts so close to
+     * (InitialGuessRecord::rate), for a level that starts so close to
      * its solution that its own first rates say little.
      */
     void set_rate_floor(const double rho) { rate_floor = rho; }

@@ -25,12 +25,10 @@ import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from fosls_runs import (Runner, cattaneo_mindlin_2d, check, check_monotone_feasible, finish,
-                        rounded)
+from fosls_runs import (CATTANEO_MINDLIN_LOADS as LOADS, CATTANEO_MINDLIN_P as P, Runner,
+                        cattaneo_mindlin_2d, check, check_monotone_feasible, finish, rounded)
 
 R = Runner(sys.argv)
-P = 0.01   # prm/cattaneo_mindlin.prm
-LOADS = [0., 0.0015, 0.0024]
 UNIFORM_DOFS = 198146   # 8 uniform levels of the scene (tests/solver/cattaneo_mindlin)
 STEPS = 8   # (Adaptivity/Steps of the scene)
 

@@ -36,12 +36,10 @@ import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from fosls_runs import (Runner, cattaneo_mindlin_2d, check, check_monotone_feasible, finish,
-                        rounded)
+from fosls_runs import (CATTANEO_MINDLIN_LOADS as LOADS, CATTANEO_MINDLIN_P as P, Runner,
+                        cattaneo_mindlin_2d, check, check_monotone_feasible, finish, rounded)
 
 R = Runner(sys.argv)
-P = 0.01   # prm/cattaneo_mindlin.prm
-LOADS = [0., 0.0015, 0.0024]
 
 
 run = R.run("prm/cattaneo_mindlin.prm", ["Geometry/Levels=8"], "cattaneo_mindlin")

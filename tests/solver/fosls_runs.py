@@ -506,6 +506,12 @@ def check_shipped(run, label):
     check(n >= 8, label + ": at least 8 contact vertices in contact")
 
 
+# prm/cattaneo_mindlin.prm's load path: the normal force P and the pulls Q
+# of its load steps (the press, 0.5 f P and 0.8 f P)
+CATTANEO_MINDLIN_P = 0.01
+CATTANEO_MINDLIN_LOADS = [0., 0.0015, 0.0024]
+
+
 def cattaneo_mindlin_2d(rows, normal_force, tangential_force, f=0.3, radius=2., e_star=4.):
     """Hertz's and Cattaneo-Mindlin's figures for one step's 2D contact
     table @p rows (sorted by x; the pull along +x), for the friction

@@ -233,12 +233,19 @@ VIOLATION_TOLERANCE = 1e-14
 
 def solves(run):
     """J at the start and after every iteration of each monotone multigrid
-    solve on the screen (with friction one solve per Tresca problem)."""
+    solve on the screen (with friction one solve per Tresca problem: a
+    problem that the Coulomb fixed point solves on to Solver/Tolerance is
+    one solve in two runs, the second starting where the first ended)."""
     result = []
+    continued = False
     for line in run.screen.splitlines():
         start = re.search(r"monotone multigrid: start\s+J = (\S+)", line)
         step = re.search(r"monotone multigrid: it\s+\d+\s+J = (\S+)", line)
-        if start:
+        if "solved on to Solver/Tolerance" in line:
+            continued = True
+        elif start and continued and result:
+            continued = False
+        elif start:
             result.append([float(start.group(1))])
         elif step and result:
             result[-1].append(float(step.group(1)))

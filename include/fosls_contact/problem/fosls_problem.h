@@ -108,9 +108,11 @@ namespace FoslsContact
     /**
      * One run of the solver on qp from solution (and the cross check), its
      * tolerance relative to at least @p reference_correction
-     * (Monitor::set_reference_correction()).
+     * (Monitor::set_reference_correction()); @p tolerance, where > 0, in
+     * place of Solver/Tolerance (the Coulomb fixed point's inexact Tresca
+     * problems).
      */
-    void run_solver(const double reference_correction = 0);
+    void run_solver(const double reference_correction = 0, const double tolerance = 0);
     /** The KKT residuals and the end of the solve, printed. */
     void report_solve();
     /**
@@ -249,6 +251,12 @@ namespace FoslsContact
      * logarithms and iterations, for the step's rate per iteration.
      */
     std::pair<double, unsigned int>      step_reduction;
+    /**
+     * The iterations and linear cycles of the step's last Tresca problem
+     * (one run of the solver, or two where the Coulomb fixed point
+     * solves the accepted problem on to Solver/Tolerance): load_steps.csv's.
+     */
+    std::pair<unsigned int, unsigned int> problem_work;
     /** The rows of a load path (Data/Load steps), one per step. */
     LoadSteps<dim>                       load_steps;
     /**

@@ -344,18 +344,19 @@ namespace FoslsContact
       }
     step_reduction = {0., 0u};
     problem_work   = {0u, 0u};
-    // An inexact fixed point: a Tresca problem whose bounds are still the
-    // fixed point's change away from their limit is solved to
-    // Friction/Tresca accuracy times that change (the first one's change
-    // taken as 1), the one whose bounds the fixed point accepts on to
-    // Solver/Tolerance (doc/method.md, section 7.7, "Stopping").
-    const bool coulomb = scene.friction_law() == Parameters::Friction::Law::coulomb;
+    // With Friction/Tresca accuracy > 0 an inexact fixed point: a Tresca
+    // problem whose bounds are still the fixed point's change away from
+    // their limit is solved to that factor times the change (the first
+    // one's change taken as 1), the one whose bounds the fixed point
+    // accepts on to Solver/Tolerance (doc/method.md, section 7.7,
+    // "Inexact Tresca problems"); the monotone multigrid's only: the active
+    // set method finds the active set and then solves exactly, so a looser
+    // tolerance saves it no step, and every restart costs steps.
+    const bool   coulomb = scene.friction_law() == Parameters::Friction::Law::coulomb;
     const double full_tolerance = parameters.solver.tolerance;
-    // (the monotone multigrid's: the active set method finds the active
-    // set and then solves exactly, so a looser tolerance saves it no step,
-    // and every restart of its iteration costs steps)
-    const bool inexact = coulomb && parameters.solver.type == Parameters::Solver::Type::monotone_multigrid &&
-                         parameters.solver.stopping == Parameters::Solver::Stopping::tolerance;
+    const bool   inexact =
+      coulomb && parameters.solver.type == Parameters::Solver::Type::monotone_multigrid &&
+      parameters.solver.stopping == Parameters::Solver::Stopping::tolerance;
     double tolerance =
       inexact ? std::max(full_tolerance, parameters.friction.tresca_accuracy) : full_tolerance;
     run_solver(0, tolerance);

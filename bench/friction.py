@@ -38,6 +38,7 @@ bench/results/friction/).
                 [--reference-max-level L] [--block-reference-max-level L]
                 [--cm-reference-max-level L] [--cm3d-max-level L]
                 [--cm3d-fine-max-level L] [--bin PATH]
+                [--set "SECTION/NAME=VALUE" ...]
 """
 import argparse
 import json
@@ -50,6 +51,9 @@ from common import BIN, RESULTS, ROOT
 
 RES = os.path.join(RESULTS, "friction")
 DOC = os.path.join(ROOT, "doc", "friction_results.md")
+# --set: settings for every run (then the tables are printed, not written to
+# DOC)
+EXTRA_SETTINGS = []
 SQUARE = os.path.join("..", "tests", "scenes", "square.prm")
 SQUARE_SETTINGS = ["Data/Constants=push=0.01, shift=0", "Data/Dirichlet values=shift; -push",
                    "Data/Load steps=push=0.01; shift=0.002; shift=0.02",
@@ -68,7 +72,7 @@ def run(binary, scene, settings, name):
     Newton steps of each solve (from the screen) and the wall time."""
     out = os.path.join(RES, name)
     cmd = common.command(scene, ["Output/Directory=" + out, "Output/Write vtu=false"]
-                         + settings, binary)
+                         + settings + EXTRA_SETTINGS, binary)
     start = time.time()
     p = common.launch(cmd, capture_output=True, text=True)
     wall = time.time() - start
@@ -230,7 +234,11 @@ def main():
     ap.add_argument("--cm3d-max-level", type=int, default=2)
     ap.add_argument("--cm3d-fine-max-level", type=int, default=2)
     ap.add_argument("--bin", default=BIN)
+    ap.add_argument("--set", action="append", default=[], metavar="SECTION/NAME=VALUE",
+                    help="a setting for every run (e.g. \"Friction/Tresca accuracy=0.01\"); "
+                         "the tables are then printed only")
     args = ap.parse_args()
+    EXTRA_SETTINGS.extend(args.set)
     os.makedirs(RES, exist_ok=True)
     parts = [
         "# Friction: the monotone multigrid against the active set method\n",
@@ -246,7 +254,7 @@ def main():
         "steps' normal and tangential forces from the active set method's, relative to the "
         "normal force. Wall times are of the whole run, on this machine's 2 cores.\n"
         % " ".join("--%s %s" % (k.replace("_", "-"), v) for k, v in vars(args).items()
-                   if k != "bin"),
+                   if k not in ("bin", "set")),
         section(args.bin, "Square, Tresca (s = 0.001), pressed and moved past its stick limit",
                 SQUARE, SQUARE_SETTINGS, "Tresca", range(4, args.square_max_level + 1),
                 args.reference_max_level, "square"),
@@ -265,6 +273,9 @@ def main():
     if args.cm3d_fine_max_level >= 2:
         parts.append(cattaneo_mindlin_section(args.bin, range(2, args.cm3d_fine_max_level + 1),
                                               0, CM_3D_FINE))
+    if args.set:
+        print("\n".join(parts))
+        return
     with open(DOC, "w") as f:
         f.write("\n".join(parts))
     print("wrote", DOC)

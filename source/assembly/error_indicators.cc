@@ -7,6 +7,7 @@
 #include <fosls_contact/assembly/worker_exceptions.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 
 namespace FoslsContact
@@ -46,6 +47,7 @@ namespace FoslsContact
       , sigma(std::max(fe_values.n_quadrature_points, fe_face.n_quadrature_points))
       , div_sigma(fe_values.n_quadrature_points)
       , f(dim)
+      , dofs(fe.n_dofs_per_cell())
     {}
 
     Scratch(const Scratch &other)
@@ -60,6 +62,7 @@ namespace FoslsContact
     std::vector<Tensor<2, dim>>          sigma;
     std::vector<Tensor<1, dim>>          div_sigma;
     Vector<double>                       f;
+    std::vector<types::global_dof_index> dofs;
   };
 
 
@@ -129,17 +132,105 @@ namespace FoslsContact
                 complementarity[i] += weights.c_compl * (scratch.u[q] * n_o - scene.gap().value(p)) *
                                       s_n * fe_face.JxW(q);
               }
+            if (slip_term != nullptr)
+              {
+                complementarity[i] += friction_bilinear(cell, face, solution, scratch);
+                const auto term = slip_term->find(cell->face(face)->index());
+                if (term != slip_term->end())
+                  complementarity[i] += term->second;
+              }
           }
   }
 
 
   template <int dim>
+  double
+  ErrorIndicators<dim>::friction_bilinear(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const unsigned int                                    f,
+    const LevelVector &                                   solution,
+    Scratch &                                             scratch) const
+  {
+    // FoslsAssembler::friction_terms()'s form at the solution: the face's
+    // mean traction (scratch.sigma, fe_face on face f) projected onto the
+    // obstacle's tangent plane at the face's center, against the
+    // tangential increment of each vertex
+    const auto &   scene   = discretization.get_scene();
+    const auto &   fe      = discretization.get_fe();
+    const auto &   fe_face = scratch.fe_face;
+    Tensor<1, dim> traction;
+    double         area = 0;
+    for (unsigned int q = 0; q < fe_face.n_quadrature_points; ++q)
+      {
+        traction += scratch.sigma[q] * fe_face.normal_vector(q) * fe_face.JxW(q);
+        area += fe_face.JxW(q);
+      }
+    traction /= area;
+    const Tensor<1, dim> n_F = scene.obstacle_normal(cell->face(f)->center());
+    traction -= (traction * n_F) * n_F;
+    cell->get_dof_indices(scratch.dofs);
+    double value = 0;
+    for (unsigned int fv = 0; fv < GeometryInfo<dim>::vertices_per_face; ++fv)
+      {
+        const unsigned int v = GeometryInfo<dim>::face_to_cell_vertices(f, fv);
+        Tensor<1, dim>     increment;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            const auto dof = scratch.dofs[fe.component_to_system_index(c, v)];
+            increment[c]   = solution(dof) - (reference != nullptr ? (*reference)(dof) : 0.);
+          }
+        const Tensor<1, dim> n_v = scene.obstacle_normal(cell->vertex(v));
+        increment -= (increment * n_v) * n_v;
+        value += traction * increment;
+      }
+    return weights.c_compl * area / GeometryInfo<dim>::vertices_per_face * value;
+  }
+
+
+  template <int dim>
+  std::unordered_map<unsigned int, double>
+  ErrorIndicators<dim>::slip_terms(const LevelVector &x_rotated, const ConstrainedQP &qp) const
+  {
+    const auto &fine = discretization.level(discretization.finest_level());
+    const auto &p    = qp.friction.slip_references;
+    const auto  z    = [&](const types::global_dof_index i) {
+      return i == numbers::invalid_dof_index ? 0. : x_rotated.local_element(i) - p.local_element(i);
+    };
+    std::unordered_map<unsigned int, double> terms;
+    for (const auto &face : fine.friction_faces)
+      {
+        const double s = qp.friction.traction_bounds.local_element(face.traction[0]);
+        double       sum = 0;
+        for (const auto &slip : face.slips)
+          sum += std::hypot(z(slip[0]), dim == 3 ? z(slip[dim - 2]) : 0.);
+        terms[face.face_index] = weights.c_compl * face.weight * s * sum;
+      }
+    return terms;
+  }
+
+
+  template <int dim>
   void
-  ErrorIndicators<dim>::compute(const LevelVector &x_rotated)
+  ErrorIndicators<dim>::compute(const LevelVector &x_rotated, const Friction *friction)
   {
     LevelVector x = x_rotated;
     discretization.rotate_to_cartesian(discretization.finest_level(), x);
     const LevelVector solution = discretization.to_active(x);
+    std::unordered_map<unsigned int, double> terms;
+    LevelVector                              reference_active;
+    if (friction != nullptr)
+      {
+        // (the slip DoFs of a face may be ghosts)
+        LevelVector x_ghosted = x_rotated;
+        update_ghosts(x_ghosted);
+        terms     = slip_terms(x_ghosted, friction->qp);
+        slip_term = &terms;
+        if (friction->reference != nullptr)
+          {
+            reference_active = discretization.to_active(*friction->reference);
+            reference        = &reference_active;
+          }
+      }
 
     const unsigned int n_cells = discretization.get_triangulation().n_active_cells();
     eq.reinit(n_cells);
@@ -163,6 +254,8 @@ namespace FoslsContact
                     [](const Empty &) {},
                     Scratch(discretization.get_mapping(), discretization.get_fe()),
                     Empty());
+    slip_term = nullptr;
+    reference = nullptr;
     errors.rethrow(discretization.get_communicator());
     summarize();
   }

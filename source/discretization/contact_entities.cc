@@ -215,7 +215,8 @@ namespace FoslsContact
     for (const auto &face : boundary.contact_faces)
       {
         FrictionFace<dim> friction;
-        friction.normal = face.dofs[0];
+        friction.face_index = face.face_index;
+        friction.normal     = face.dofs[0];
         for (unsigned int k = 1; k < dim; ++k)
           friction.traction[k - 1] = face.dofs[k];
         friction.weight = face.area / GeometryInfo<dim>::vertices_per_face;

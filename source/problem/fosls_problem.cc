@@ -126,21 +126,27 @@ namespace FoslsContact
     std::function<void()> release;
     if (!needs_fine_coupling_pattern(false))
       release = [this, L]() { discretization->release_coupling_pattern(L); };
-    // (friction acts on the displacement relative to the step's start:
-    // the previous load step's solution, or the undeformed body)
     LevelVector        reference;
-    const LevelVector *friction_reference = nullptr;
-    if (scene.has_friction() && load_step > 0)
-      {
-        reference = carried;
-        update_ghosts(reference);
-        friction_reference = &reference;
-      }
+    const LevelVector *friction_reference = step_reference(reference);
     FoslsAssembler<dim>(*discretization, parameters.weights, friction_reference)
       .assemble(L, qp, release);
     if (scene.has_friction())
       set_friction(friction_reference);
     time_setup += wall.wall_time();
+  }
+
+
+  template <int dim>
+  const LevelVector *
+  FoslsProblem<dim>::step_reference(LevelVector &storage) const
+  {
+    // (friction acts on the displacement relative to the step's start:
+    // the previous load step's solution, or the undeformed body)
+    if (!scene.has_friction() || load_step == 0)
+      return nullptr;
+    storage = carried;
+    update_ghosts(storage);
+    return &storage;
   }
 
 
@@ -518,7 +524,12 @@ namespace FoslsContact
     const auto           forces    = post.boundary_forces(cartesian);
     const Tensor<1, dim> force     = post.contact_force(forces);
     indicators = std::make_unique<ErrorIndicators<dim>>(*discretization, parameters.weights);
-    indicators->compute(solution);
+    {
+      // (J's friction terms: those of the step's assembly and last Tresca problem)
+      LevelVector                                  reference;
+      const typename ErrorIndicators<dim>::Friction friction{qp, step_reference(reference)};
+      indicators->compute(solution, scene.has_friction() ? &friction : nullptr);
+    }
     run_summary.add_solver(summary);
     if (parameters.solver.initial_guess == Parameters::Solver::InitialGuess::nested_iteration)
       {

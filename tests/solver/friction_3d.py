@@ -19,6 +19,7 @@
 #  - prm/sliding_block_3d.prm on 2 levels: every step converges, J never
 #    increases, the Newton steps per Tresca problem printed (3 levels:
 #    tests/solver/friction_3d_reference).
+#  - The error indicators hold the friction terms: their sum is J (to 1e-6).
 # ctest: mpirun timeout=900
 import os
 import sys
@@ -128,4 +129,12 @@ for levels in (2,):
               [r["stick_vertices"] for r in rows]))
     check(block.ok() and monotone(block) and len(rows) == 5,
           "sliding block 3D, %d levels: every step converged, J never increases" % levels)
+
+# --- the error indicators hold the friction terms (the disc's |slip| too)
+for case, label in ((two, "Tresca path on 2 processes"), (run, "Coulomb, full slip"),
+                    (block, "sliding block 3D")):
+    total = (case["error_indicators"] or {}).get("sum", 0)
+    check(case.ok() and relative_difference(total, case["functional"]) <= 1e-6,
+          "%s: the cellwise parts of J (error indicators) sum to J, friction terms included "
+          "(to 1e-6)" % label)
 finish()

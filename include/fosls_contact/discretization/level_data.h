@@ -84,6 +84,8 @@ namespace FoslsContact
   template <int dim>
   struct FrictionFace
   {
+    /** The face's index in the triangulation (face->index()). */
+    unsigned int                                              face_index;
     std::array<types::global_dof_index, dim - 1>              traction;
     types::global_dof_index                                   normal;
     double                                                    weight;

@@ -122,6 +122,12 @@ namespace FoslsContact
      */
     void set_friction(const LevelVector *reference);
     /**
+     * With friction from the second load step on: the displacement
+     * friction acts relative to, the previous step's solution (Cartesian,
+     * ghosted, kept in @p storage); else nullptr (the undeformed body).
+     */
+    const LevelVector *step_reference(LevelVector &storage) const;
+    /**
      * With friction: the stick and slip vertices and the normal and
      * tangential contact force (@p force split along the obstacle normal),
      * from the contact table @p rows with its friction columns (on the

@@ -373,6 +373,12 @@ namespace FoslsContact
     if (coulomb)
       for (;;)
         {
+          // (a SIGTERM or SIGINT ends the fixed point with the Tresca
+          // problem it stopped: the run then keeps what it finished, and the
+          // fixed point would otherwise go on through its remaining
+          // problems, each stopped after one iteration)
+          if (monitor->stop_reason() == "interrupted")
+            break;
           update_ghosts(solution);
           const std::vector<double> s      = friction_law->slip_bounds(solution);
           const double              change = friction_law->relative_change(slip_bounds, s);

@@ -196,7 +196,7 @@ check(block.ok() and len(steps) == 5 and steps[0]["stick_vertices"] > 0
       "and Q = f P to 2%")
 
 # --- the error indicators hold the friction terms: their sum is J (without
-# them it fell short by the friction term, 3-10% of J on these paths)
+# them it falls short of J by the friction term)
 for run, label in ((tresca, "Tresca path"), (coulomb, "Coulomb path"),
                    (two, "Coulomb path on 2 processes"), (block, "prm/sliding_block.prm")):
     total = (run["error_indicators"] or {}).get("sum", 0)

@@ -13,6 +13,10 @@
 #    exactly those steps, contact.csv equal to the last of them, and
 #    convergence.csv that step's iterations; no staging directory is left.
 #  - The same with SIGINT on one process.
+#  - SIGTERM during the Coulomb fixed point of load step 2 of
+#    prm/sliding_block.prm (6 levels): exit code 4, one line naming the
+#    signal and the load step, and at most one more Tresca problem finished
+#    after the signal (the fixed point stops with the problem it stopped).
 #  - SIGTERM before the first solve finished (as soon as the screen shows
 #    the first phase): exit code 4, one line saying that nothing was
 #    written, and no output directory.
@@ -30,15 +34,21 @@ exe, source = sys.argv[1], sys.argv[2]
 scene = os.path.join(source, "prm", "hertz_adaptive.prm")
 
 
-def interrupted(name, trigger, sig=signal.SIGTERM, processes=1):
-    """Run the adaptive scene into ./name, send @p sig once a screen line
-    starts with @p trigger; return (exit code, stderr lines)."""
-    command = command_line(exe, scene, ["Output/Directory=" + name,
-                                        "Output/Write vtu=false"], processes)
+def interrupted(name, trigger, sig=signal.SIGTERM, processes=1, run_scene=None, settings=(),
+                armed_by=None, after=None):
+    """Run the adaptive scene (or @p run_scene with @p settings) into ./name,
+    send @p sig once a screen line starts with @p trigger (after one that
+    starts with @p armed_by, if given); return (exit code, stderr lines).
+    The screen lines after the trigger go to the list @p after, if given."""
+    command = command_line(exe, run_scene or scene, ["Output/Directory=" + name,
+                                                     "Output/Write vtu=false"] + list(settings),
+                           processes)
     process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                                text=True, start_new_session=True)
+    armed = armed_by is None
     for line in process.stdout:
-        if line.startswith(trigger):
+        armed = armed or line.startswith(armed_by)
+        if armed and line.startswith(trigger):
             # on several processes the signal goes to every process, as a
             # batch system sends it (mpirun itself, signalled, ends the job
             # with its own exit code)
@@ -50,7 +60,9 @@ def interrupted(name, trigger, sig=signal.SIGTERM, processes=1):
             for pid in targets:
                 os.kill(pid, sig)
             break
-    process.stdout.read()
+    rest = process.stdout.read()
+    if after is not None:
+        after.extend(rest.splitlines())
     err = process.stderr.read()
     try:
         code = process.wait(timeout=300)
@@ -101,6 +113,20 @@ code, err = interrupted("int_1", "Adaptive step 2", signal.SIGINT)
 check(code == 4 and len(err) == 1 and "interrupted by SIGINT" in err[0],
       "SIGINT in step 2: exit code 4, one line naming the signal")
 check_finished_steps("int_1", "SIGINT in step 2", "SIGINT")
+
+# a Coulomb fixed point stops with the Tresca problem the signal stopped
+# (not running its remaining problems one iteration each); the signal may
+# reach the program a problem later than the line it follows
+screen = []
+code, err = interrupted("coulomb", "Coulomb fixed point: Tresca problem 1,",
+                        run_scene=os.path.join(source, "prm", "sliding_block.prm"),
+                        settings=["Geometry/Levels=6"], armed_by="Load step 2", after=screen)
+later = [l for l in screen if l.startswith("Coulomb fixed point: Tresca problem")]
+print("SIGTERM in a Coulomb fixed point: %s" % (err[0] if err else "no line on stderr"))
+check(code == 4 and len(err) == 1 and "interrupted by SIGTERM in load step 2" in err[0]
+      and len(later) <= 1,
+      "SIGTERM in a Coulomb fixed point: exit code 4, one line naming the signal, at most one "
+      "more Tresca problem finished")
 
 code, err = interrupted("early", "Setup: mesh")
 check(code == 4 and len(err) == 1 and "before the first solve finished: no output written"

@@ -21,6 +21,7 @@ import bisect
 import csv
 import json
 import os
+import re
 import signal
 import subprocess
 import time
@@ -31,6 +32,26 @@ from friction import CATTANEO_MINDLIN
 
 RES = os.path.join(RESULTS, "cm3d_adaptive")
 DOC = os.path.join(ROOT, "doc", "cm3d_adaptive_results.md")
+
+
+def stopped(summary, run, text):
+    """For a run stopped by SIGTERM: when, and the longest Tresca problem of
+    the load step under way (its Newton steps and the rates per step of its
+    last ten, from the screen)."""
+    if "interrupted" not in summary:
+        return ""
+    why = ", stopped by SIGTERM" + (" after --time-limit %.0f s" % run["time_limit"]
+                                    if run["time_limit"] else "")
+    step = text.rfind("Load step ")
+    solves = [re.findall(r"multigrid: it +\d+ .* rate = ([0-9.]+)", block)
+              for block in text[step:].split("monotone multigrid: start")[1:]]
+    longest = max(solves, key=len, default=[])
+    if step < 0 or not longest:
+        return why
+    last = [float(r) for r in longest[-10:]]
+    return why + (" in load step %s, where a Tresca problem had taken %d Newton steps, the last "
+                  "ten at rates %.2f to %.2f per step" % (
+                      text[step:].split()[2], len(longest), min(last), max(last)))
 
 
 def main():
@@ -75,8 +96,7 @@ def main():
              "on the pressed state (P = 0.001365, Hertz's a = 0.080), then pulled to Q = 0.5 f P "
              "and 0.8 f P on the last mesh; Tresca problems to 1e-6, the Coulomb fixed point to "
              "1e-4. One run on this machine's 2 cores, %.0f s in all%s.%s" % (
-                 run["steps"], run["wall_s"], ", stopped by SIGTERM after --time-limit %.0f s" %
-                 run["time_limit"] if "interrupted" in summary else "",
+                 run["steps"], run["wall_s"], stopped(summary, run, text),
                  " " + args.remark if args.remark else ""), "",
              "| mesh | DoFs | pressure error (relative L2 on the contact boundary) | "
              "solve time [s] |", "|---|---|---|---|"]
